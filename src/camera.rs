@@ -1,0 +1,277 @@
+//! [`Camera`]: the chapter's pinhole camera and the general look-at camera.
+
+use micromath::F32Ext;
+
+use crate::error::Error;
+use crate::fx::{self, Fx, FRAC};
+use crate::ray::Ray;
+use crate::vec3::Vec3;
+
+/// Largest screen size in pixels, per side.
+pub const MAX_PIXELS: u16 = 4096;
+
+/// The view distance in pixels may be at most this, so ray directions stay well inside Q16.16.
+const MAX_VIEW_DISTANCE_PX: f32 = 8192.0;
+
+/// A camera: a viewpoint and a screen of `cols × rows` pixels in front of it.
+///
+/// Display indexing throughout: row 0 is the top of the picture, column 0 the left. The
+/// chapter numbers its rows upward from the bottom, so its row `i` is display row
+/// `rows − 1 − i`; with that mapping the picture comes out upright.
+///
+/// Ray directions do not depend on the size of the screen, only on its shape, so the camera
+/// stores its screen scaled to make one pixel one unit wide. The pixel-centre offsets are then
+/// exact half-integers, and Q16.16 rounding of a small pixel pitch (`w/N`) never accumulates
+/// across a row.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Camera {
+    eye: Vec3,
+    /// From the eye to the screen centre, in pixel units.
+    forward: Vec3,
+    /// One pixel towards increasing column.
+    right: Vec3,
+    /// One pixel towards increasing display row (down the picture).
+    down: Vec3,
+    /// World units per pixel column on the screen, for [`Camera::pixel_centre`].
+    pitch: Fx,
+    cols: u16,
+    rows: u16,
+}
+
+fn check_resolution(cols: u16, rows: u16) -> Result<(), Error> {
+    if cols == 0 || rows == 0 {
+        return Err(Error::DegenerateCamera { why: "the screen has no pixels" });
+    }
+    if cols > MAX_PIXELS || rows > MAX_PIXELS {
+        return Err(Error::DegenerateCamera { why: "the screen is wider or taller than 4096 pixels" });
+    }
+    Ok(())
+}
+
+/// A positive, finite `f32` setup value, converted to Q16.16 within `±max`.
+fn positive(value: f32, max: f32, what: &'static str) -> Result<Fx, Error> {
+    if !value.is_finite() {
+        return Err(Error::NotFinite { what });
+    }
+    if value <= 0.0 {
+        return Err(Error::DegenerateCamera { why: what });
+    }
+    fx::fx_from_f32_within(value, Fx::from_num(max), "the camera's limits", what)
+}
+
+impl Camera {
+    /// The chapter's pinhole camera: the viewpoint at the origin looking down −z, a view
+    /// screen `w × h` (world units) at distance `z_p`, split into `rows × cols` pixels.
+    ///
+    /// Pixel `(i, j)` of the chapter (row `i` counted upward) has its centre at
+    /// `p_ij = c − (w/2, h/2) + (w/N·(j + ½), h/M·(i + ½))` with `c = (0, 0, −z_p)`.
+    ///
+    /// ```
+    /// use fixray::{Camera, Vec3};
+    /// // The chapter's M = 3 by N = 5 screen, 5 × 3 units wide and high, one unit away.
+    /// let cam = Camera::pinhole(5.0, 3.0, 1.0, 3, 5).unwrap();
+    /// // Chapter pixel (0, 0) is bottom left: display row 2, column 0.
+    /// assert_eq!(cam.pixel_centre(2, 0), Vec3::from_ints(-2, -1, -1));
+    /// ```
+    pub fn pinhole(w: f32, h: f32, z_p: f32, rows: u16, cols: u16) -> Result<Self, Error> {
+        check_resolution(cols, rows)?;
+        positive(w, 1024.0, "screen width")?;
+        positive(h, 1024.0, "screen height")?;
+        positive(z_p, 1024.0, "screen distance")?;
+        let pitch_x = w / cols as f32;
+        let pitch_y = h / rows as f32;
+        let forward_px = positive(z_p / pitch_x, MAX_VIEW_DISTANCE_PX, "screen distance in pixels")?;
+        let aspect = pitch_y / pitch_x;
+        if !(0.25..=4.0).contains(&aspect) {
+            return Err(Error::DegenerateCamera {
+                why: "pixels more than four times taller than wide, or wider than tall",
+            });
+        }
+        let down_px = Fx::from_num(aspect);
+        Ok(Camera {
+            eye: Vec3::ZERO,
+            forward: Vec3::new(Fx::ZERO, Fx::ZERO, -forward_px),
+            right: Vec3::X,
+            down: Vec3::new(Fx::ZERO, -down_px, Fx::ZERO),
+            pitch: Fx::from_num(pitch_x),
+            cols,
+            rows,
+        })
+    }
+
+    /// The general camera: at `eye`, looking at `target`, with `up` giving the upward
+    /// direction of the picture and a vertical field of view of `fov_y_degrees`.
+    ///
+    /// Pixels are square. The screen sits one unit in front of the eye, `2·tan(fov/2)` high.
+    /// Degenerate input — `target == eye`, `up` zero or parallel to the view, a field of view
+    /// outside (0°, 180°), no pixels — is an error.
+    ///
+    /// The tangent is micromath's, whose error at 60° is about 0.07 % of the field of view.
+    ///
+    /// ```
+    /// use fixray::{Camera, Error};
+    /// let cam = Camera::look_at([0.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0], 60.0, 160, 128);
+    /// assert!(cam.is_ok());
+    /// let bad = Camera::look_at([0.0; 3], [0.0, 5.0, 0.0], [0.0, 1.0, 0.0], 60.0, 160, 128);
+    /// assert!(matches!(bad, Err(Error::DegenerateCamera { .. })));
+    /// ```
+    pub fn look_at(
+        eye: [f32; 3],
+        target: [f32; 3],
+        up: [f32; 3],
+        fov_y_degrees: f32,
+        cols: u16,
+        rows: u16,
+    ) -> Result<Self, Error> {
+        check_resolution(cols, rows)?;
+        let eye = Vec3::from_f32(eye, "camera eye")?;
+        let target = Vec3::from_f32(target, "camera target")?;
+        let up = Vec3::from_f32(up, "camera up")?;
+        if !fov_y_degrees.is_finite() {
+            return Err(Error::NotFinite { what: "field of view" });
+        }
+        if !(fov_y_degrees > 0.0 && fov_y_degrees < 180.0) {
+            return Err(Error::DegenerateCamera {
+                why: "field of view must lie strictly between 0 and 180 degrees",
+            });
+        }
+        let forward = (target - eye)
+            .try_normalize()
+            .ok_or(Error::DegenerateCamera { why: "target is the eye" })?;
+        let up = up
+            .try_normalize()
+            .ok_or(Error::DegenerateCamera { why: "up is the zero vector" })?;
+        let side = forward.cross(up);
+        // Unit vectors closer than about 0.2° to parallel do not define a picture's up.
+        if side.length() < Fx::from_bits(1 << (FRAC - 8)) {
+            return Err(Error::DegenerateCamera { why: "up is parallel to the view direction" });
+        }
+        let right = side.try_normalize().unwrap_or(Vec3::X);
+        let true_up = right.cross(forward);
+        let half_angle = fov_y_degrees.to_radians() / 2.0;
+        let screen_h = 2.0 * F32Ext::tan(half_angle);
+        let pitch = screen_h / rows as f32;
+        let distance_px = positive(1.0 / pitch, MAX_VIEW_DISTANCE_PX, "screen distance in pixels")?;
+        Ok(Camera {
+            eye,
+            forward: forward.scale(distance_px),
+            right,
+            down: -true_up,
+            pitch: Fx::from_num(pitch),
+            cols,
+            rows,
+        })
+    }
+
+    /// Columns (pixels across).
+    #[must_use]
+    pub const fn cols(&self) -> u16 {
+        self.cols
+    }
+
+    /// Rows (pixels down).
+    #[must_use]
+    pub const fn rows(&self) -> u16 {
+        self.rows
+    }
+
+    /// The viewpoint.
+    #[must_use]
+    pub const fn eye(&self) -> Vec3 {
+        self.eye
+    }
+
+    /// From the eye towards the centre of pixel (`row`, `col`), in pixel units, unnormalised.
+    fn towards(&self, row: u16, col: u16) -> Vec3 {
+        // Offsets from the screen centre, in half pixels: 2·(col + ½) − cols.
+        let kx = 2 * col as i64 + 1 - self.cols as i64;
+        let ky = 2 * row as i64 + 1 - self.rows as i64;
+        let c = |f: Fx, r: Fx, d: Fx| {
+            let wide = ((f.to_bits() as i64) << 1) + r.to_bits() as i64 * kx + d.to_bits() as i64 * ky;
+            // Halve, rounding half up. The limits (view distance ≤ 8192 pixels, ≤ 4096 pixels a
+            // side, pixel aspect within 1/4..4) keep each component below 18 432 pixels.
+            Fx::from_bits(((wide + 1) >> 1) as i32)
+        };
+        Vec3::new(
+            c(self.forward.x, self.right.x, self.down.x),
+            c(self.forward.y, self.right.y, self.down.y),
+            c(self.forward.z, self.right.z, self.down.z),
+        )
+    }
+
+    /// The centre of pixel (`row`, `col`) on the view screen, in world units (display
+    /// indexing: row 0 at the top).
+    #[must_use]
+    pub fn pixel_centre(&self, row: u16, col: u16) -> Vec3 {
+        self.eye + self.towards(row, col).scale(self.pitch)
+    }
+
+    /// The ray from the viewpoint through the centre of pixel (`row`, `col`):
+    /// `u_r = p / ‖p‖`.
+    ///
+    /// Rows and columns outside the screen are allowed and continue the screen plane.
+    #[must_use]
+    pub fn ray(&self, row: u16, col: u16) -> Ray {
+        // The screen is at least half a pixel in front of the eye, so p is never zero.
+        let dir = self.towards(row, col).normalize_or_zero();
+        Ray::new_unchecked(self.eye, dir)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn chapter_screen_pixel_centres() {
+        // w = 5, h = 3, z_p = 1 over M = 3 rows and N = 5 columns: one unit per pixel.
+        let cam = Camera::pinhole(5.0, 3.0, 1.0, 3, 5).unwrap();
+        for i in 0..3u16 {
+            for j in 0..5u16 {
+                let expect = Vec3::from_f32(
+                    [-2.5 + (j as f32 + 0.5), -1.5 + (i as f32 + 0.5), -1.0],
+                    "p",
+                )
+                .unwrap();
+                assert_eq!(cam.pixel_centre(2 - i, j), expect, "chapter pixel ({i}, {j})");
+            }
+        }
+    }
+
+    #[test]
+    fn picture_is_upright_and_unmirrored() {
+        let cam = Camera::pinhole(2.0, 2.0, 1.0, 10, 10).unwrap();
+        assert!(cam.ray(0, 5).dir.y > Fx::ZERO, "row 0 looks up");
+        assert!(cam.ray(9, 5).dir.y < Fx::ZERO, "last row looks down");
+        assert!(cam.ray(5, 0).dir.x < Fx::ZERO, "column 0 looks left");
+        let general = Camera::look_at([0.0; 3], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0], 90.0, 10, 10).unwrap();
+        assert!(general.ray(0, 5).dir.y > Fx::ZERO);
+        assert!(general.ray(5, 0).dir.x < Fx::ZERO);
+    }
+
+    #[test]
+    fn look_at_down_minus_z_matches_the_pinhole() {
+        // A 90° field of view at distance 1 is a 2 × 2 screen.
+        let a = Camera::look_at([0.0; 3], [0.0, 0.0, -5.0], [0.0, 3.0, 0.0], 90.0, 8, 8).unwrap();
+        let b = Camera::pinhole(2.0, 2.0, 1.0, 8, 8).unwrap();
+        for (row, col) in [(0, 0), (3, 4), (7, 7)] {
+            let (da, db) = (a.ray(row, col).dir, b.ray(row, col).dir);
+            for (p, q) in [(da.x, db.x), (da.y, db.y), (da.z, db.z)] {
+                assert!((p - q).abs() <= Fx::from_bits(4), "{da:?} vs {db:?}");
+            }
+        }
+    }
+
+    #[test]
+    fn degenerate_cameras_are_refused() {
+        let up = [0.0, 1.0, 0.0];
+        let err = |r: Result<Camera, Error>| r.unwrap_err();
+        assert!(matches!(err(Camera::look_at([1.0; 3], [1.0; 3], up, 60.0, 4, 4)), Error::DegenerateCamera { why: "target is the eye" }));
+        assert!(matches!(err(Camera::look_at([0.0; 3], [0.0, 0.0, -1.0], [0.0; 3], 60.0, 4, 4)), Error::DegenerateCamera { .. }));
+        assert!(matches!(err(Camera::look_at([0.0; 3], [0.0, 0.0, -1.0], up, 0.0, 4, 4)), Error::DegenerateCamera { .. }));
+        assert!(matches!(err(Camera::look_at([0.0; 3], [0.0, 0.0, -1.0], up, f32::NAN, 4, 4)), Error::NotFinite { .. }));
+        assert!(matches!(err(Camera::look_at([0.0; 3], [0.0, 0.0, -1.0], up, 60.0, 0, 4)), Error::DegenerateCamera { .. }));
+        assert!(matches!(err(Camera::pinhole(-1.0, 1.0, 1.0, 4, 4)), Error::DegenerateCamera { .. }));
+        assert!(matches!(err(Camera::pinhole(1.0, 1.0, f32::INFINITY, 4, 4)), Error::NotFinite { .. }));
+    }
+}

@@ -1,0 +1,70 @@
+//! The crate's one error type.
+
+use core::fmt;
+
+/// Why fixray refused an input.
+///
+/// Every constructor that takes user values checks them and returns one of these instead of
+/// panicking, wrapping or dividing by zero later in the render path.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum Error {
+    /// A float input was NaN or infinite.
+    NotFinite {
+        /// The quantity that was not finite.
+        what: &'static str,
+    },
+    /// A value lies outside the range fixray documents as overflow-safe ([`LIMIT`](crate::LIMIT)).
+    OutOfRange {
+        /// The quantity that was out of range.
+        what: &'static str,
+        /// The range it must lie in.
+        range: &'static str,
+    },
+    /// A sphere radius was zero or negative.
+    NonPositiveRadius,
+    /// A vector that must have a direction (a normal, a ray direction) was zero.
+    ZeroVector {
+        /// The vector that was zero.
+        what: &'static str,
+    },
+    /// A scene or light list is full; the capacity is in its type.
+    CapacityExceeded {
+        /// The capacity that was reached.
+        capacity: usize,
+    },
+    /// Camera parameters that do not define a view.
+    DegenerateCamera {
+        /// What is wrong with them.
+        why: &'static str,
+    },
+    /// A camera and a framebuffer (or display area) of different sizes.
+    SizeMismatch {
+        /// Columns and rows the camera was built for.
+        camera: (u16, u16),
+        /// Columns and rows of the target.
+        target: (u16, u16),
+    },
+}
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Error::NotFinite { what } => write!(f, "{what} is NaN or infinite"),
+            Error::OutOfRange { what, range } => write!(f, "{what} is outside {range}"),
+            Error::NonPositiveRadius => write!(f, "sphere radius must be greater than zero"),
+            Error::ZeroVector { what } => write!(f, "{what} is the zero vector"),
+            Error::CapacityExceeded { capacity } => {
+                write!(f, "capacity of {capacity} is already used")
+            }
+            Error::DegenerateCamera { why } => write!(f, "degenerate camera: {why}"),
+            Error::SizeMismatch { camera, target } => write!(
+                f,
+                "camera is {}x{} pixels but the target is {}x{}",
+                camera.0, camera.1, target.0, target.1
+            ),
+        }
+    }
+}
+
+impl core::error::Error for Error {}

@@ -1,0 +1,130 @@
+//! The one scalar of the renderer: [`Fx`], a Q16.16 fixed-point number, and the widening
+//! arithmetic that keeps products exact.
+//!
+//! A Q16.16 value is an `i32` counting units of 2⁻¹⁶ (about 1.5 × 10⁻⁵), so it spans
+//! −32 768 ≤ x < 32 768. Multiplying two of them directly would need 48 bits before the
+//! result is scaled back, so every product here widens to `i64` first ("Q32.32"), and dot
+//! products add their three terms at that width before a single rounding.
+
+use crate::error::Error;
+
+/// The renderer's scalar: a signed Q16.16 fixed-point number.
+pub type Fx = fixed::types::I16F16;
+
+/// The largest magnitude a coordinate, a radius or a light position may have.
+///
+/// Keeping inputs within ±1024 and hits within [`FAR`] leaves every intermediate of the
+/// render path (differences, squared lengths, dot products) inside its integer type with room
+/// to spare; see the crate docs for the budget.
+pub const LIMIT: Fx = Fx::const_from_int(1024);
+
+/// The far clip: hits farther along a ray than this are misses.
+///
+/// It bounds hit points to ±(1024 + 8192), so that they, and the vectors from them to a light,
+/// stay well inside Q16.16.
+pub const FAR: Fx = Fx::const_from_int(8192);
+
+/// Number of fractional bits in [`Fx`].
+pub(crate) const FRAC: u32 = 16;
+
+/// The product of two Q16.16 raw values, exact, as a Q32.32 raw value.
+#[inline]
+#[must_use]
+pub(crate) const fn wide_mul(a: i32, b: i32) -> i64 {
+    a as i64 * b as i64
+}
+
+/// A Q32.32 raw value rounded (half up) back to Q16.16, saturating at the ends of the range.
+#[inline]
+#[must_use]
+pub(crate) const fn narrow(wide: i64) -> Fx {
+    let rounded = (wide + (1 << (FRAC - 1))) >> FRAC;
+    if rounded > i32::MAX as i64 {
+        Fx::MAX
+    } else if rounded < i32::MIN as i64 {
+        Fx::MIN
+    } else {
+        Fx::from_bits(rounded as i32)
+    }
+}
+
+/// `a * b` in Q16.16 with the product formed at 64 bits and rounded once.
+#[inline]
+#[must_use]
+pub const fn mul(a: Fx, b: Fx) -> Fx {
+    narrow(wide_mul(a.to_bits(), b.to_bits()))
+}
+
+/// The range [`LIMIT`] allows, as the error messages state it.
+pub(crate) const LIMIT_RANGE: &str = "the overflow-safe range ±1024";
+
+/// Converts an `f32` to [`Fx`], refusing NaN, infinities and values outside ±[`LIMIT`].
+///
+/// `what` names the quantity in the error message.
+///
+/// ```
+/// use fixray::{fx_from_f32, Error, Fx};
+/// assert_eq!(fx_from_f32(-3.25, "x"), Ok(Fx::from_num(-3.25)));
+/// assert!(matches!(fx_from_f32(2000.0, "x"), Err(Error::OutOfRange { what: "x", .. })));
+/// ```
+pub fn fx_from_f32(value: f32, what: &'static str) -> Result<Fx, Error> {
+    fx_from_f32_within(value, LIMIT, LIMIT_RANGE, what)
+}
+
+/// [`fx_from_f32`] with another limit, stated as `range` in the error.
+pub(crate) fn fx_from_f32_within(
+    value: f32,
+    limit: Fx,
+    range: &'static str,
+    what: &'static str,
+) -> Result<Fx, Error> {
+    if !value.is_finite() {
+        return Err(Error::NotFinite { what });
+    }
+    let limit_f = limit.to_num::<f32>();
+    if value > limit_f || value < -limit_f {
+        return Err(Error::OutOfRange { what, range });
+    }
+    // In range and finite, so the conversion cannot overflow.
+    Ok(Fx::from_num(value))
+}
+
+/// Refuses an [`Fx`] outside ±[`LIMIT`].
+pub(crate) fn check_range(value: Fx, what: &'static str) -> Result<Fx, Error> {
+    if value > LIMIT || value < -LIMIT {
+        Err(Error::OutOfRange {
+            what,
+            range: LIMIT_RANGE,
+        })
+    } else {
+        Ok(value)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn mul_rounds_to_nearest() {
+        // 3 × 2⁻¹⁶ times 0.5 is 1.5 × 2⁻¹⁶, which rounds half up to 2 × 2⁻¹⁶.
+        let a = Fx::from_bits(3);
+        assert_eq!(mul(a, Fx::from_num(0.5)).to_bits(), 2);
+        assert_eq!(mul(Fx::from_num(-2.5), Fx::from_num(4)), Fx::from_num(-10));
+    }
+
+    #[test]
+    fn mul_saturates_instead_of_wrapping() {
+        assert_eq!(mul(Fx::from_num(200), Fx::from_num(200)), Fx::MAX);
+        assert_eq!(mul(Fx::from_num(-200), Fx::from_num(200)), Fx::MIN);
+    }
+
+    #[test]
+    fn f32_conversion_is_checked() {
+        assert_eq!(fx_from_f32(f32::NAN, "x"), Err(Error::NotFinite { what: "x" }));
+        assert_eq!(fx_from_f32(f32::NEG_INFINITY, "x"), Err(Error::NotFinite { what: "x" }));
+        assert!(matches!(fx_from_f32(1024.5, "x"), Err(Error::OutOfRange { .. })));
+        assert!(matches!(fx_from_f32(-1e30, "x"), Err(Error::OutOfRange { .. })));
+        assert_eq!(fx_from_f32(1024.0, "x"), Ok(Fx::from_num(1024)));
+    }
+}

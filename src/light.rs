@@ -1,0 +1,41 @@
+//! [`Light`]: a point light.
+
+use crate::error::Error;
+use crate::fx::Fx;
+use crate::vec3::Vec3;
+
+/// A point light at `position` with a diffuse `intensity` between 0 and 1.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Light {
+    /// Where the light is.
+    pub position: Vec3,
+    /// How strongly it lights a surface facing it, 0 to 1.
+    pub intensity: Fx,
+}
+
+impl Light {
+    /// A light, checked: position within ±[`LIMIT`](crate::LIMIT), intensity within 0..=1.
+    pub fn new(position: Vec3, intensity: Fx) -> Result<Self, Error> {
+        let position = position.check_range("light position")?;
+        let intensity = unit_interval(intensity, "light intensity")?;
+        Ok(Light { position, intensity })
+    }
+
+    /// A light whose values the caller promises are valid. For `const` scenes.
+    #[must_use]
+    pub const fn new_unchecked(position: Vec3, intensity: Fx) -> Self {
+        Light { position, intensity }
+    }
+}
+
+/// Refuses a weight outside 0..=1.
+pub(crate) fn unit_interval(value: Fx, what: &'static str) -> Result<Fx, Error> {
+    if value < Fx::ZERO || value > Fx::ONE {
+        Err(Error::OutOfRange {
+            what,
+            range: "0 to 1",
+        })
+    } else {
+        Ok(value)
+    }
+}

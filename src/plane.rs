@@ -1,0 +1,146 @@
+//! [`Plane`] and ray–plane intersection (section 4.3, Eq. 4.2).
+
+use crate::error::Error;
+use crate::fx::{Fx, FAR, FRAC};
+use crate::hit::Hit;
+use crate::ray::Ray;
+use crate::vec3::Vec3;
+
+/// An infinite plane through a point `p0` with unit normal `n`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Plane {
+    point: Vec3,
+    normal: Vec3,
+}
+
+impl Plane {
+    /// A plane through `point` facing `normal` (normalised here).
+    ///
+    /// ```
+    /// use fixray::{Error, Plane, Vec3};
+    /// let ground = Plane::new(Vec3::from_ints(0, -4, 0), Vec3::from_ints(0, 3, 0)).unwrap();
+    /// assert_eq!(ground.normal(), Vec3::Y);
+    /// assert_eq!(
+    ///     Plane::new(Vec3::ZERO, Vec3::ZERO),
+    ///     Err(Error::ZeroVector { what: "plane normal" })
+    /// );
+    /// ```
+    pub fn new(point: Vec3, normal: Vec3) -> Result<Self, Error> {
+        let point = point.check_range("plane point")?;
+        let normal = normal
+            .try_normalize()
+            .ok_or(Error::ZeroVector { what: "plane normal" })?;
+        Ok(Plane { point, normal })
+    }
+
+    /// A plane whose values the caller promises are valid: `point` within ±1024 and `normal`
+    /// a unit vector. For `const` scenes.
+    #[must_use]
+    pub const fn new_unchecked(point: Vec3, normal: Vec3) -> Self {
+        Plane { point, normal }
+    }
+
+    /// The point `p0` the plane passes through.
+    #[must_use]
+    pub const fn point(&self) -> Vec3 {
+        self.point
+    }
+
+    /// The unit normal `n`.
+    #[must_use]
+    pub const fn normal(&self) -> Vec3 {
+        self.normal
+    }
+
+    /// The perpendicular distance `d = n·(x − p0)` of a point from the plane: positive above
+    /// (on the side `n` points to), negative below.
+    #[must_use]
+    pub fn distance(&self, x: Vec3) -> Fx {
+        self.normal.dot(x - self.point)
+    }
+
+    /// Where `ray` meets the plane: `t = −n·(p_r − p0) / (n·u_r)` (Eq. 4.2).
+    ///
+    /// A ray parallel to the plane (`n·u_r = 0`), one whose hit lies behind its origin, and one
+    /// whose hit lies beyond [`FAR`] all miss. The division happens only once the hit is known
+    /// to be in front and within `FAR`, so it cannot divide by zero or overflow. The normal of
+    /// the hit faces the ray: planes are two-sided.
+    ///
+    /// ```
+    /// use fixray::{Fx, Plane, Ray, Vec3};
+    /// // The chapter's wall whose front face is at x = 4, and its ray from (1, 1) along +x.
+    /// let wall = Plane::new(Vec3::from_ints(4, 0, 0), Vec3::from_ints(-1, 0, 0)).unwrap();
+    /// let ray = Ray::new(Vec3::from_ints(1, 1, 0), Vec3::X).unwrap();
+    /// let hit = wall.intersect(&ray).unwrap();
+    /// assert_eq!(hit.t, Fx::from_num(3));
+    /// assert_eq!(hit.point, Vec3::from_ints(4, 1, 0));
+    /// // A ray parallel to the wall misses.
+    /// assert!(wall.intersect(&Ray::new(Vec3::ZERO, Vec3::Y).unwrap()).is_none());
+    /// ```
+    #[must_use]
+    pub fn intersect(&self, ray: &Ray) -> Option<Hit> {
+        // Both are exact Q32.32 values.
+        let den = self.normal.dot_wide(ray.dir);
+        let num = -self.normal.dot_wide(ray.origin - self.point);
+        if den == 0 || (num != 0 && (num < 0) != (den < 0)) {
+            return None; // parallel, or the plane is behind the origin
+        }
+        let (num, den_abs) = (num.unsigned_abs(), den.unsigned_abs());
+        // t ≤ FAR  ⇔  |num| ≤ FAR·|den|; |den| ≤ 2³³ so the product fits.
+        if num > den_abs * FAR.to_num::<u64>() {
+            return None;
+        }
+        // |num| ≤ 2¹³·2³³, so shifting by 16 stays below 2⁶². Rounded to nearest.
+        let t = ((num << FRAC) + den_abs / 2) / den_abs;
+        let t = Fx::from_bits(t as i32);
+        let normal = if den < 0 { self.normal } else { -self.normal };
+        Some(Hit {
+            t,
+            point: ray.at(t),
+            normal,
+            object: 0,
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn ray(o: [f32; 3], d: [f32; 3]) -> Ray {
+        Ray::new(
+            Vec3::from_f32(o, "o").unwrap(),
+            Vec3::from_f32(d, "d").unwrap(),
+        )
+        .unwrap()
+    }
+
+    #[test]
+    fn distance_sign_tells_the_side() {
+        let ground = Plane::new(Vec3::from_ints(0, -4, 0), Vec3::Y).unwrap();
+        assert_eq!(ground.distance(Vec3::ZERO), Fx::from_num(4));
+        assert_eq!(ground.distance(Vec3::from_ints(3, -6, 1)), Fx::from_num(-2));
+    }
+
+    #[test]
+    fn hit_behind_the_origin_is_a_miss() {
+        let ground = Plane::new(Vec3::from_ints(0, -4, 0), Vec3::Y).unwrap();
+        assert!(ground.intersect(&ray([0.0, 0.0, 0.0], [0.0, 1.0, 0.0])).is_none());
+        assert!(ground.intersect(&ray([0.0, 0.0, 0.0], [0.0, -1.0, 0.0])).is_some());
+    }
+
+    #[test]
+    fn nearly_parallel_ray_beyond_far_is_a_miss_not_an_overflow() {
+        let ground = Plane::new(Vec3::from_ints(0, -4, 0), Vec3::Y).unwrap();
+        // One Q16.16 unit downward: the hit would be 4 · 2¹⁶ away.
+        let r = Ray::new_unchecked(Vec3::ZERO, Vec3::new(Fx::ZERO, Fx::from_bits(-1), -Fx::ONE));
+        assert!(ground.intersect(&r).is_none());
+    }
+
+    #[test]
+    fn the_normal_faces_the_ray() {
+        let ground = Plane::new(Vec3::from_ints(0, -4, 0), Vec3::Y).unwrap();
+        let from_below = ray([0.0, -8.0, 0.0], [0.0, 1.0, 0.0]);
+        assert_eq!(ground.intersect(&from_below).unwrap().normal, -Vec3::Y);
+    }
+}

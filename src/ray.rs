@@ -1,0 +1,51 @@
+//! [`Ray`]: the chapter's ray `x(t) = p_r + t·u_r` (Eq. 4.1).
+
+use crate::error::Error;
+use crate::fx::Fx;
+use crate::vec3::Vec3;
+
+/// A ray: an origination point `p_r` and a unit direction `u_r`.
+///
+/// Every point on the ray is `x(t) = p_r + t·u_r` for a distance `t ≥ 0` (Eq. 4.1).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Ray {
+    /// The origination point `p_r`.
+    pub origin: Vec3,
+    /// The unit direction `u_r`.
+    pub dir: Vec3,
+}
+
+impl Ray {
+    /// A ray from `origin` along `dir`, which is normalised here.
+    ///
+    /// The origin must lie within ±[`LIMIT`](crate::LIMIT); a zero direction is an error.
+    ///
+    /// ```
+    /// use fixray::{Fx, Ray, Vec3};
+    /// // The chapter's example: from (1, 1) along +x.
+    /// let ray = Ray::new(Vec3::from_ints(1, 1, 0), Vec3::from_ints(5, 0, 0)).unwrap();
+    /// assert_eq!(ray.dir, Vec3::X);
+    /// assert_eq!(ray.at(Fx::from_num(3)), Vec3::from_ints(4, 1, 0));
+    /// ```
+    pub fn new(origin: Vec3, dir: Vec3) -> Result<Self, Error> {
+        let origin = origin.check_range("ray origin")?;
+        let dir = dir
+            .try_normalize()
+            .ok_or(Error::ZeroVector { what: "ray direction" })?;
+        Ok(Ray { origin, dir })
+    }
+
+    /// A ray whose direction the caller promises is already a unit vector.
+    #[inline]
+    #[must_use]
+    pub const fn new_unchecked(origin: Vec3, dir: Vec3) -> Self {
+        Ray { origin, dir }
+    }
+
+    /// The point at distance `t` along the ray: `p_r + t·u_r`.
+    #[inline]
+    #[must_use]
+    pub fn at(&self, t: Fx) -> Vec3 {
+        self.origin + self.dir.scale(t)
+    }
+}

@@ -1,0 +1,258 @@
+//! [`Vec3`]: a point or direction in Q16.16.
+
+use core::ops::{Add, Neg, Sub};
+
+use crate::error::Error;
+use crate::fx::{self, Fx, FRAC};
+use crate::isqrt::isqrt;
+
+/// A point or a direction with three Q16.16 components.
+///
+/// Addition, subtraction and negation saturate at the ends of the Q16.16 range instead of
+/// wrapping; inside the documented range ([`LIMIT`](crate::LIMIT)) they are exact. Products
+/// (`dot`, `cross`, `length`) are formed at 64 bits and rounded once.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Hash)]
+pub struct Vec3 {
+    /// x component.
+    pub x: Fx,
+    /// y component.
+    pub y: Fx,
+    /// z component.
+    pub z: Fx,
+}
+
+impl Vec3 {
+    /// The zero vector.
+    pub const ZERO: Vec3 = Vec3::new(Fx::ZERO, Fx::ZERO, Fx::ZERO);
+    /// The unit vector along +x.
+    pub const X: Vec3 = Vec3::new(Fx::ONE, Fx::ZERO, Fx::ZERO);
+    /// The unit vector along +y.
+    pub const Y: Vec3 = Vec3::new(Fx::ZERO, Fx::ONE, Fx::ZERO);
+    /// The unit vector along +z.
+    pub const Z: Vec3 = Vec3::new(Fx::ZERO, Fx::ZERO, Fx::ONE);
+
+    /// A vector from three Q16.16 components.
+    #[inline]
+    #[must_use]
+    pub const fn new(x: Fx, y: Fx, z: Fx) -> Self {
+        Vec3 { x, y, z }
+    }
+
+    /// A vector from three whole numbers, for `const` scenes.
+    ///
+    /// ```
+    /// use fixray::{Fx, Vec3};
+    /// const UP: Vec3 = Vec3::from_ints(0, 1, 0);
+    /// assert_eq!(UP.y, Fx::ONE);
+    /// ```
+    #[inline]
+    #[must_use]
+    pub const fn from_ints(x: i16, y: i16, z: i16) -> Self {
+        Vec3::new(
+            Fx::const_from_int(x as i32),
+            Fx::const_from_int(y as i32),
+            Fx::const_from_int(z as i32),
+        )
+    }
+
+    /// A vector from `f32` components, each checked to be finite and within ±[`LIMIT`].
+    ///
+    /// `what` names the vector in the error message.
+    ///
+    /// ```
+    /// use fixray::{Error, Vec3};
+    /// assert!(Vec3::from_f32([1.5, -4.0, -16.0], "centre").is_ok());
+    /// assert_eq!(
+    ///     Vec3::from_f32([f32::NAN, 0.0, 0.0], "centre"),
+    ///     Err(Error::NotFinite { what: "centre" })
+    /// );
+    /// ```
+    pub fn from_f32(v: [f32; 3], what: &'static str) -> Result<Self, Error> {
+        Ok(Vec3::new(
+            fx::fx_from_f32(v[0], what)?,
+            fx::fx_from_f32(v[1], what)?,
+            fx::fx_from_f32(v[2], what)?,
+        ))
+    }
+
+    /// Checks that every component lies within ±[`LIMIT`].
+    pub fn check_range(self, what: &'static str) -> Result<Self, Error> {
+        fx::check_range(self.x, what)?;
+        fx::check_range(self.y, what)?;
+        fx::check_range(self.z, what)?;
+        Ok(self)
+    }
+
+    /// The components as `f64`, for comparisons with the reference model.
+    #[must_use]
+    pub fn to_f64(self) -> [f64; 3] {
+        [self.x.to_num(), self.y.to_num(), self.z.to_num()]
+    }
+
+    /// `self · k`, each component rounded once.
+    #[inline]
+    #[must_use]
+    pub const fn scale(self, k: Fx) -> Self {
+        Vec3::new(fx::mul(self.x, k), fx::mul(self.y, k), fx::mul(self.z, k))
+    }
+
+    /// The dot product as an exact Q32.32 raw value (`i64`, 2⁻³² units).
+    ///
+    /// Three products of Q16.16 values within ±2¹⁴ sum to well under 2⁶³, so this never
+    /// overflows for vectors in the render path.
+    #[inline]
+    #[must_use]
+    pub const fn dot_wide(self, o: Vec3) -> i64 {
+        fx::wide_mul(self.x.to_bits(), o.x.to_bits())
+            + fx::wide_mul(self.y.to_bits(), o.y.to_bits())
+            + fx::wide_mul(self.z.to_bits(), o.z.to_bits())
+    }
+
+    /// The dot product, formed at 64 bits and rounded once to Q16.16 (saturating).
+    #[inline]
+    #[must_use]
+    pub const fn dot(self, o: Vec3) -> Fx {
+        fx::narrow(self.dot_wide(o))
+    }
+
+    /// The cross product, each component formed at 64 bits and rounded once.
+    #[inline]
+    #[must_use]
+    pub const fn cross(self, o: Vec3) -> Vec3 {
+        /// `p·q − r·s`, formed at 64 bits and rounded once.
+        const fn c(p: Fx, q: Fx, r: Fx, s: Fx) -> Fx {
+            fx::narrow(fx::wide_mul(p.to_bits(), q.to_bits()) - fx::wide_mul(r.to_bits(), s.to_bits()))
+        }
+        let (a, b) = (self, o);
+        Vec3::new(
+            c(a.y, b.z, a.z, b.y),
+            c(a.z, b.x, a.x, b.z),
+            c(a.x, b.y, a.y, b.x),
+        )
+    }
+
+    /// ‖self‖² as an exact Q32.32 raw value.
+    #[inline]
+    #[must_use]
+    pub const fn length_squared_wide(self) -> i64 {
+        self.dot_wide(self)
+    }
+
+    /// ‖self‖, truncated to Q16.16: `isqrt` of the exact Q32.32 square.
+    #[inline]
+    #[must_use]
+    pub const fn length(self) -> Fx {
+        let root = isqrt(self.length_squared_wide() as u64);
+        // The square of a vector of Q16.16 components is below 3 · 2⁶², so its root is below
+        // 2^32 and fits; above i32::MAX it saturates.
+        if root > i32::MAX as u64 {
+            Fx::MAX
+        } else {
+            Fx::from_bits(root as i32)
+        }
+    }
+
+    /// The unit vector along `self`, or `None` for the zero vector.
+    ///
+    /// Each component is `(c · 2¹⁶) / ‖self‖`, rounded to nearest, so a unit vector's
+    /// length is 1 within a few units of 2⁻¹⁶.
+    #[must_use]
+    pub fn try_normalize(self) -> Option<Vec3> {
+        let len = self.length().to_bits() as i64;
+        if len == 0 {
+            return None;
+        }
+        let div = |c: Fx| {
+            let n = (c.to_bits() as i64) << FRAC;
+            // Round half away from zero; |n / len| ≤ 2¹⁶ because |c| ≤ ‖self‖.
+            let q = if n >= 0 { (n + len / 2) / len } else { (n - len / 2) / len };
+            Fx::from_bits(q as i32)
+        };
+        Some(Vec3::new(div(self.x), div(self.y), div(self.z)))
+    }
+
+    /// The unit vector along `self`, or the zero vector when `self` is zero.
+    #[must_use]
+    pub fn normalize_or_zero(self) -> Vec3 {
+        self.try_normalize().unwrap_or(Vec3::ZERO)
+    }
+}
+
+impl Add for Vec3 {
+    type Output = Vec3;
+    #[inline]
+    fn add(self, o: Vec3) -> Vec3 {
+        Vec3::new(
+            self.x.saturating_add(o.x),
+            self.y.saturating_add(o.y),
+            self.z.saturating_add(o.z),
+        )
+    }
+}
+
+impl Sub for Vec3 {
+    type Output = Vec3;
+    #[inline]
+    fn sub(self, o: Vec3) -> Vec3 {
+        Vec3::new(
+            self.x.saturating_sub(o.x),
+            self.y.saturating_sub(o.y),
+            self.z.saturating_sub(o.z),
+        )
+    }
+}
+
+impl Neg for Vec3 {
+    type Output = Vec3;
+    #[inline]
+    fn neg(self) -> Vec3 {
+        Vec3::new(self.x.saturating_neg(), self.y.saturating_neg(), self.z.saturating_neg())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn v(x: f32, y: f32, z: f32) -> Vec3 {
+        Vec3::from_f32([x, y, z], "v").unwrap()
+    }
+
+    #[test]
+    fn long_vectors_square_without_overflow() {
+        // 200² = 40 000 does not fit Q16.16, but the wide square does, and so does its root.
+        let a = v(200.0, 0.0, 0.0);
+        assert_eq!(a.length_squared_wide(), 40_000i64 << 32);
+        assert_eq!(a.length(), Fx::from_num(200));
+        let b = v(1000.0, -1000.0, 1000.0);
+        assert_eq!(b.dot_wide(b), 3_000_000i64 << 32);
+    }
+
+    #[test]
+    fn dot_keeps_the_bits_a_narrow_product_would_lose() {
+        // (2⁻¹⁶ · 2⁻¹⁶) summed 3 × 2¹⁶ times would vanish if each product were rounded first.
+        let tiny = Vec3::new(Fx::from_bits(1), Fx::from_bits(1), Fx::from_bits(1));
+        assert_eq!(tiny.dot_wide(tiny), 3);
+    }
+
+    #[test]
+    fn cross_follows_the_right_hand_rule() {
+        assert_eq!(Vec3::X.cross(Vec3::Y), Vec3::Z);
+        assert_eq!(Vec3::Y.cross(Vec3::X), -Vec3::Z);
+    }
+
+    #[test]
+    fn normalize_gives_unit_length() {
+        let n = v(3.0, 4.0, 0.0).try_normalize().unwrap();
+        assert_eq!(n, v(0.6, 0.8, 0.0));
+        assert_eq!(Vec3::ZERO.try_normalize(), None);
+        assert_eq!(Vec3::ZERO.normalize_or_zero(), Vec3::ZERO);
+    }
+
+    #[test]
+    fn add_saturates() {
+        let big = Vec3::new(Fx::MAX, Fx::MIN, Fx::ZERO);
+        let sum = big + big;
+        assert_eq!((sum.x, sum.y), (Fx::MAX, Fx::MIN));
+    }
+}
