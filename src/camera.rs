@@ -1,9 +1,7 @@
 //! [`Camera`]: the chapter's pinhole camera and the general look-at camera.
 
-use micromath::F32Ext;
-
 use crate::error::Error;
-use crate::fx::{self, Fx, FRAC};
+use crate::fx::{self, FRAC, Fx};
 use crate::ray::Ray;
 use crate::vec3::Vec3;
 
@@ -40,10 +38,14 @@ pub struct Camera {
 
 fn check_resolution(cols: u16, rows: u16) -> Result<(), Error> {
     if cols == 0 || rows == 0 {
-        return Err(Error::DegenerateCamera { why: "the screen has no pixels" });
+        return Err(Error::DegenerateCamera {
+            why: "the screen has no pixels",
+        });
     }
     if cols > MAX_PIXELS || rows > MAX_PIXELS {
-        return Err(Error::DegenerateCamera { why: "the screen is wider or taller than 4096 pixels" });
+        return Err(Error::DegenerateCamera {
+            why: "the screen is wider or taller than 4096 pixels",
+        });
     }
     Ok(())
 }
@@ -80,7 +82,11 @@ impl Camera {
         positive(z_p, 1024.0, "screen distance")?;
         let pitch_x = w / cols as f32;
         let pitch_y = h / rows as f32;
-        let forward_px = positive(z_p / pitch_x, MAX_VIEW_DISTANCE_PX, "screen distance in pixels")?;
+        let forward_px = positive(
+            z_p / pitch_x,
+            MAX_VIEW_DISTANCE_PX,
+            "screen distance in pixels",
+        )?;
         let aspect = pitch_y / pitch_x;
         if !(0.25..=4.0).contains(&aspect) {
             return Err(Error::DegenerateCamera {
@@ -106,7 +112,10 @@ impl Camera {
     /// Degenerate input — `target == eye`, `up` zero or parallel to the view, a field of view
     /// outside (0°, 180°), no pixels — is an error.
     ///
-    /// The tangent is micromath's, whose error at 60° is about 0.07 % of the field of view.
+    /// The tangent is libm's `tanf`, correctly rounded to within an ulp. (micromath's `tan`
+    /// is 0.07 % off at 60° and 0.19 % at 45°; measured against the f64 reference, that
+    /// error alone moved silhouettes enough to drop object agreement on the demo scene from
+    /// 100 % to 99.97 % and raise the largest channel error from 1 to 4.)
     ///
     /// ```
     /// use fixray::{Camera, Error};
@@ -128,7 +137,9 @@ impl Camera {
         let target = Vec3::from_f32(target, "camera target")?;
         let up = Vec3::from_f32(up, "camera up")?;
         if !fov_y_degrees.is_finite() {
-            return Err(Error::NotFinite { what: "field of view" });
+            return Err(Error::NotFinite {
+                what: "field of view",
+            });
         }
         if !(fov_y_degrees > 0.0 && fov_y_degrees < 180.0) {
             return Err(Error::DegenerateCamera {
@@ -137,21 +148,29 @@ impl Camera {
         }
         let forward = (target - eye)
             .try_normalize()
-            .ok_or(Error::DegenerateCamera { why: "target is the eye" })?;
-        let up = up
-            .try_normalize()
-            .ok_or(Error::DegenerateCamera { why: "up is the zero vector" })?;
+            .ok_or(Error::DegenerateCamera {
+                why: "target is the eye",
+            })?;
+        let up = up.try_normalize().ok_or(Error::DegenerateCamera {
+            why: "up is the zero vector",
+        })?;
         let side = forward.cross(up);
         // Unit vectors closer than about 0.2° to parallel do not define a picture's up.
         if side.length() < Fx::from_bits(1 << (FRAC - 8)) {
-            return Err(Error::DegenerateCamera { why: "up is parallel to the view direction" });
+            return Err(Error::DegenerateCamera {
+                why: "up is parallel to the view direction",
+            });
         }
         let right = side.try_normalize().unwrap_or(Vec3::X);
         let true_up = right.cross(forward);
         let half_angle = fov_y_degrees.to_radians() / 2.0;
-        let screen_h = 2.0 * F32Ext::tan(half_angle);
+        let screen_h = 2.0 * libm::tanf(half_angle);
         let pitch = screen_h / rows as f32;
-        let distance_px = positive(1.0 / pitch, MAX_VIEW_DISTANCE_PX, "screen distance in pixels")?;
+        let distance_px = positive(
+            1.0 / pitch,
+            MAX_VIEW_DISTANCE_PX,
+            "screen distance in pixels",
+        )?;
         Ok(Camera {
             eye,
             forward: forward.scale(distance_px),
@@ -187,7 +206,8 @@ impl Camera {
         let kx = 2 * col as i64 + 1 - self.cols as i64;
         let ky = 2 * row as i64 + 1 - self.rows as i64;
         let c = |f: Fx, r: Fx, d: Fx| {
-            let wide = ((f.to_bits() as i64) << 1) + r.to_bits() as i64 * kx + d.to_bits() as i64 * ky;
+            let wide =
+                ((f.to_bits() as i64) << 1) + r.to_bits() as i64 * kx + d.to_bits() as i64 * ky;
             // Halve, rounding half up. The limits (view distance ≤ 8192 pixels, ≤ 4096 pixels a
             // side, pixel aspect within 1/4..4) keep each component below 18 432 pixels.
             Fx::from_bits(((wide + 1) >> 1) as i32)
@@ -233,7 +253,11 @@ mod tests {
                     "p",
                 )
                 .unwrap();
-                assert_eq!(cam.pixel_centre(2 - i, j), expect, "chapter pixel ({i}, {j})");
+                assert_eq!(
+                    cam.pixel_centre(2 - i, j),
+                    expect,
+                    "chapter pixel ({i}, {j})"
+                );
             }
         }
     }
@@ -244,7 +268,8 @@ mod tests {
         assert!(cam.ray(0, 5).dir.y > Fx::ZERO, "row 0 looks up");
         assert!(cam.ray(9, 5).dir.y < Fx::ZERO, "last row looks down");
         assert!(cam.ray(5, 0).dir.x < Fx::ZERO, "column 0 looks left");
-        let general = Camera::look_at([0.0; 3], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0], 90.0, 10, 10).unwrap();
+        let general =
+            Camera::look_at([0.0; 3], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0], 90.0, 10, 10).unwrap();
         assert!(general.ray(0, 5).dir.y > Fx::ZERO);
         assert!(general.ray(5, 0).dir.x < Fx::ZERO);
     }
@@ -266,12 +291,49 @@ mod tests {
     fn degenerate_cameras_are_refused() {
         let up = [0.0, 1.0, 0.0];
         let err = |r: Result<Camera, Error>| r.unwrap_err();
-        assert!(matches!(err(Camera::look_at([1.0; 3], [1.0; 3], up, 60.0, 4, 4)), Error::DegenerateCamera { why: "target is the eye" }));
-        assert!(matches!(err(Camera::look_at([0.0; 3], [0.0, 0.0, -1.0], [0.0; 3], 60.0, 4, 4)), Error::DegenerateCamera { .. }));
-        assert!(matches!(err(Camera::look_at([0.0; 3], [0.0, 0.0, -1.0], up, 0.0, 4, 4)), Error::DegenerateCamera { .. }));
-        assert!(matches!(err(Camera::look_at([0.0; 3], [0.0, 0.0, -1.0], up, f32::NAN, 4, 4)), Error::NotFinite { .. }));
-        assert!(matches!(err(Camera::look_at([0.0; 3], [0.0, 0.0, -1.0], up, 60.0, 0, 4)), Error::DegenerateCamera { .. }));
-        assert!(matches!(err(Camera::pinhole(-1.0, 1.0, 1.0, 4, 4)), Error::DegenerateCamera { .. }));
-        assert!(matches!(err(Camera::pinhole(1.0, 1.0, f32::INFINITY, 4, 4)), Error::NotFinite { .. }));
+        assert!(matches!(
+            err(Camera::look_at([1.0; 3], [1.0; 3], up, 60.0, 4, 4)),
+            Error::DegenerateCamera {
+                why: "target is the eye"
+            }
+        ));
+        assert!(matches!(
+            err(Camera::look_at(
+                [0.0; 3],
+                [0.0, 0.0, -1.0],
+                [0.0; 3],
+                60.0,
+                4,
+                4
+            )),
+            Error::DegenerateCamera { .. }
+        ));
+        assert!(matches!(
+            err(Camera::look_at([0.0; 3], [0.0, 0.0, -1.0], up, 0.0, 4, 4)),
+            Error::DegenerateCamera { .. }
+        ));
+        assert!(matches!(
+            err(Camera::look_at(
+                [0.0; 3],
+                [0.0, 0.0, -1.0],
+                up,
+                f32::NAN,
+                4,
+                4
+            )),
+            Error::NotFinite { .. }
+        ));
+        assert!(matches!(
+            err(Camera::look_at([0.0; 3], [0.0, 0.0, -1.0], up, 60.0, 0, 4)),
+            Error::DegenerateCamera { .. }
+        ));
+        assert!(matches!(
+            err(Camera::pinhole(-1.0, 1.0, 1.0, 4, 4)),
+            Error::DegenerateCamera { .. }
+        ));
+        assert!(matches!(
+            err(Camera::pinhole(1.0, 1.0, f32::INFINITY, 4, 4)),
+            Error::NotFinite { .. }
+        ));
     }
 }

@@ -29,9 +29,17 @@ pub fn scene() -> Scene<8> {
     };
     let spheres = [
         (Vec3::from_ints(-3, 0, -16), 2.0, Rgb::new(230, 220, 180)), // ivory
-        (Vec3::new(fx(-1.0), fx(-1.5), fx(-12.0)), 2.0, Rgb::new(90, 140, 230)), // blue
-        (Vec3::new(fx(1.5), fx(-0.5), fx(-18.0)), 3.0, Rgb::new(200, 50, 40)), // red
-        (Vec3::from_ints(7, 5, -18), 4.0, Rgb::new(210, 210, 215)), // silver
+        (
+            Vec3::new(fx(-1.0), fx(-1.5), fx(-12.0)),
+            2.0,
+            Rgb::new(90, 140, 230),
+        ), // blue
+        (
+            Vec3::new(fx(1.5), fx(-0.5), fx(-18.0)),
+            3.0,
+            Rgb::new(200, 50, 40),
+        ), // red
+        (Vec3::from_ints(7, 5, -18), 4.0, Rgb::new(210, 210, 215)),  // silver
     ];
     let ground = Plane::new_unchecked(Vec3::from_ints(0, -4, 0), Vec3::Y);
     // Eight slots, five objects: these pushes cannot fail.
@@ -51,7 +59,9 @@ pub const SCREEN_DISTANCE: f32 = 1.732_050_8;
 /// screen `2 · cols / rows` wide and [`SCREEN_HEIGHT`] high at [`SCREEN_DISTANCE`].
 pub fn camera(cols: u16, rows: u16) -> Result<Camera, Error> {
     if rows == 0 {
-        return Err(Error::DegenerateCamera { why: "the screen has no pixels" });
+        return Err(Error::DegenerateCamera {
+            why: "the screen has no pixels",
+        });
     }
     let width = SCREEN_HEIGHT * cols as f32 / rows as f32;
     Camera::pinhole(width, SCREEN_HEIGHT, SCREEN_DISTANCE, rows, cols)

@@ -73,10 +73,7 @@ impl<const W: usize, const H: usize> Framebuffer<W, H> {
     /// The frame's bytes, row by row, `r, g, b` for each pixel: what a PPM file holds and what
     /// [`FrameHash`](crate::FrameHash) digests.
     pub fn bytes(&self) -> impl Iterator<Item = u8> + '_ {
-        self.rows
-            .iter()
-            .flatten()
-            .flat_map(|p| [p.r, p.g, p.b])
+        self.rows.iter().flatten().flat_map(|p| [p.r, p.g, p.b])
     }
 }
 

@@ -121,10 +121,22 @@ mod tests {
 
     #[test]
     fn f32_conversion_is_checked() {
-        assert_eq!(fx_from_f32(f32::NAN, "x"), Err(Error::NotFinite { what: "x" }));
-        assert_eq!(fx_from_f32(f32::NEG_INFINITY, "x"), Err(Error::NotFinite { what: "x" }));
-        assert!(matches!(fx_from_f32(1024.5, "x"), Err(Error::OutOfRange { .. })));
-        assert!(matches!(fx_from_f32(-1e30, "x"), Err(Error::OutOfRange { .. })));
+        assert_eq!(
+            fx_from_f32(f32::NAN, "x"),
+            Err(Error::NotFinite { what: "x" })
+        );
+        assert_eq!(
+            fx_from_f32(f32::NEG_INFINITY, "x"),
+            Err(Error::NotFinite { what: "x" })
+        );
+        assert!(matches!(
+            fx_from_f32(1024.5, "x"),
+            Err(Error::OutOfRange { .. })
+        ));
+        assert!(matches!(
+            fx_from_f32(-1e30, "x"),
+            Err(Error::OutOfRange { .. })
+        ));
         assert_eq!(fx_from_f32(1024.0, "x"), Ok(Fx::from_num(1024)));
     }
 }

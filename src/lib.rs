@@ -41,6 +41,8 @@
 //! - viewing: [`Camera`]
 //! - the world: [`Scene`], [`Object`], [`Shape`], [`Light`], [`Rgb`]
 //! - output: [`render`], [`render_row`], [`Framebuffer`], [`FrameHash`]
+//! - [`draw`]: onto any `embedded-graphics` display, streamed band by band ([`Viewport`]),
+//!   in [`FromRgb`] colours with Bayer dithering for grey and one-bit displays
 //! - [`demo`]: the scene the examples, tests and firmware share
 //! - `reference` (feature `reference`): an independent f64 model of the same maths
 
@@ -51,6 +53,7 @@
 mod camera;
 mod color;
 pub mod demo;
+pub mod draw;
 mod error;
 mod framebuffer;
 mod fx;
@@ -70,9 +73,10 @@ pub mod reference;
 
 pub use camera::{Camera, MAX_PIXELS};
 pub use color::Rgb;
+pub use draw::{DrawError, FromRgb, Viewport};
 pub use error::Error;
 pub use framebuffer::Framebuffer;
-pub use fx::{fx_from_f32, mul, Fx, FAR, LIMIT};
+pub use fx::{FAR, Fx, LIMIT, fx_from_f32, mul};
 pub use hash::FrameHash;
 pub use hit::Hit;
 pub use isqrt::isqrt;

@@ -18,13 +18,19 @@ impl Light {
     pub fn new(position: Vec3, intensity: Fx) -> Result<Self, Error> {
         let position = position.check_range("light position")?;
         let intensity = unit_interval(intensity, "light intensity")?;
-        Ok(Light { position, intensity })
+        Ok(Light {
+            position,
+            intensity,
+        })
     }
 
     /// A light whose values the caller promises are valid. For `const` scenes.
     #[must_use]
     pub const fn new_unchecked(position: Vec3, intensity: Fx) -> Self {
-        Light { position, intensity }
+        Light {
+            position,
+            intensity,
+        }
     }
 }
 

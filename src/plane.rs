@@ -1,7 +1,7 @@
 //! [`Plane`] and ray–plane intersection (section 4.3, Eq. 4.2).
 
 use crate::error::Error;
-use crate::fx::{Fx, FAR, FRAC};
+use crate::fx::{FAR, FRAC, Fx};
 use crate::hit::Hit;
 use crate::ray::Ray;
 use crate::vec3::Vec3;
@@ -27,9 +27,9 @@ impl Plane {
     /// ```
     pub fn new(point: Vec3, normal: Vec3) -> Result<Self, Error> {
         let point = point.check_range("plane point")?;
-        let normal = normal
-            .try_normalize()
-            .ok_or(Error::ZeroVector { what: "plane normal" })?;
+        let normal = normal.try_normalize().ok_or(Error::ZeroVector {
+            what: "plane normal",
+        })?;
         Ok(Plane { point, normal })
     }
 
@@ -125,8 +125,16 @@ mod tests {
     #[test]
     fn hit_behind_the_origin_is_a_miss() {
         let ground = Plane::new(Vec3::from_ints(0, -4, 0), Vec3::Y).unwrap();
-        assert!(ground.intersect(&ray([0.0, 0.0, 0.0], [0.0, 1.0, 0.0])).is_none());
-        assert!(ground.intersect(&ray([0.0, 0.0, 0.0], [0.0, -1.0, 0.0])).is_some());
+        assert!(
+            ground
+                .intersect(&ray([0.0, 0.0, 0.0], [0.0, 1.0, 0.0]))
+                .is_none()
+        );
+        assert!(
+            ground
+                .intersect(&ray([0.0, 0.0, 0.0], [0.0, -1.0, 0.0]))
+                .is_some()
+        );
     }
 
     #[test]

@@ -29,9 +29,9 @@ impl Ray {
     /// ```
     pub fn new(origin: Vec3, dir: Vec3) -> Result<Self, Error> {
         let origin = origin.check_range("ray origin")?;
-        let dir = dir
-            .try_normalize()
-            .ok_or(Error::ZeroVector { what: "ray direction" })?;
+        let dir = dir.try_normalize().ok_or(Error::ZeroVector {
+            what: "ray direction",
+        })?;
         Ok(Ray { origin, dir })
     }
 

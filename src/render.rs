@@ -29,7 +29,10 @@ pub fn render_row<const N: usize>(
     if out.len() != camera.cols() as usize || row >= camera.rows() {
         return Err(Error::SizeMismatch {
             camera: (camera.cols(), camera.rows()),
-            target: (out.len().min(u16::MAX as usize) as u16, row.saturating_add(1)),
+            target: (
+                out.len().min(u16::MAX as usize) as u16,
+                row.saturating_add(1),
+            ),
         });
     }
     for (col, pixel) in out.iter_mut().enumerate() {
@@ -56,7 +59,10 @@ pub fn render<const N: usize, const W: usize, const H: usize>(
     if (camera.cols() as usize, camera.rows() as usize) != (W, H) {
         return Err(Error::SizeMismatch {
             camera: (camera.cols(), camera.rows()),
-            target: (W.min(u16::MAX as usize) as u16, H.min(u16::MAX as usize) as u16),
+            target: (
+                W.min(u16::MAX as usize) as u16,
+                H.min(u16::MAX as usize) as u16,
+            ),
         });
     }
     for (row, pixels) in frame.rows_mut().iter_mut().enumerate() {

@@ -6,7 +6,7 @@ use crate::color::Rgb;
 use crate::error::Error;
 use crate::fx::{self, Fx};
 use crate::hit::Hit;
-use crate::light::{unit_interval, Light};
+use crate::light::{Light, unit_interval};
 use crate::plane::Plane;
 use crate::ray::Ray;
 use crate::sphere::Sphere;
@@ -134,7 +134,10 @@ impl<const N: usize> Scene<N> {
             if let Some(hit) = object.shape.intersect(ray)
                 && nearest.is_none_or(|best| hit.t < best.t)
             {
-                nearest = Some(Hit { object: index, ..hit });
+                nearest = Some(Hit {
+                    object: index,
+                    ..hit
+                });
             }
         }
         nearest
@@ -154,7 +157,11 @@ impl<const N: usize> Scene<N> {
         let k = self.ambient + fx::mul(self.light.intensity, diffuse);
         // k ≤ 2, so k · 255 stays far inside u32.
         let channel = |c: u8| ((c as u32 * k.to_bits() as u32 + 0x8000) >> 16).min(255) as u8;
-        Rgb::new(channel(object.colour.r), channel(object.colour.g), channel(object.colour.b))
+        Rgb::new(
+            channel(object.colour.r),
+            channel(object.colour.g),
+            channel(object.colour.b),
+        )
     }
 
     /// `shade(shoot(ray))`: the colour of the pixel this ray passes through.
@@ -181,7 +188,9 @@ mod tests {
         let near = Sphere::new(Vec3::from_ints(0, 0, -10), Fx::from_num(2)).unwrap();
         scene.add_sphere(far, Rgb::WHITE).unwrap();
         let near_index = scene.add_sphere(near, Rgb::WHITE).unwrap();
-        let hit = scene.shoot(&Ray::new(Vec3::ZERO, -Vec3::Z).unwrap()).unwrap();
+        let hit = scene
+            .shoot(&Ray::new(Vec3::ZERO, -Vec3::Z).unwrap())
+            .unwrap();
         assert_eq!((hit.object, hit.t), (near_index, Fx::from_num(8)));
     }
 
@@ -198,13 +207,19 @@ mod tests {
         let mut dark: Scene<1> = Scene::new(behind, Fx::from_num(0.25), Rgb::BLACK).unwrap();
         let wall = Plane::new(Vec3::from_ints(0, 0, -5), Vec3::Z).unwrap();
         dark.add_plane(wall, Rgb::new(200, 100, 0)).unwrap();
-        assert_eq!(dark.trace(&Ray::new(Vec3::ZERO, -Vec3::Z).unwrap()), Rgb::new(50, 25, 0));
+        assert_eq!(
+            dark.trace(&Ray::new(Vec3::ZERO, -Vec3::Z).unwrap()),
+            Rgb::new(50, 25, 0)
+        );
     }
 
     #[test]
     fn misses_show_the_background() {
         let scene = lit_from_above();
-        assert_eq!(scene.trace(&Ray::new(Vec3::ZERO, Vec3::X).unwrap()), Rgb::new(1, 2, 3));
+        assert_eq!(
+            scene.trace(&Ray::new(Vec3::ZERO, Vec3::X).unwrap()),
+            Rgb::new(1, 2, 3)
+        );
     }
 
     #[test]
@@ -212,7 +227,10 @@ mod tests {
         let light = Light::new(Vec3::ZERO, Fx::ONE).unwrap();
         assert!(matches!(
             Scene::<1>::new(light, Fx::from_num(1.5), Rgb::BLACK),
-            Err(Error::OutOfRange { what: "ambient light", .. })
+            Err(Error::OutOfRange {
+                what: "ambient light",
+                ..
+            })
         ));
     }
 }

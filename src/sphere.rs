@@ -1,7 +1,7 @@
 //! [`Sphere`] and the chapter's two-step ray–sphere intersection (section 4.4).
 
 use crate::error::Error;
-use crate::fx::{self, Fx, FAR, FRAC};
+use crate::fx::{self, FAR, FRAC, Fx};
 use crate::hit::Hit;
 use crate::isqrt::isqrt;
 use crate::ray::Ray;
@@ -15,7 +15,7 @@ pub struct Sphere {
 }
 
 impl Sphere {
-    /// A sphere, checked: the radius must be positive and at most [`LIMIT`], the centre within
+    /// A sphere, checked: the radius must be positive and at most [`LIMIT`](crate::LIMIT), the centre within
     /// ±`LIMIT`.
     ///
     /// ```
@@ -79,12 +79,12 @@ impl Sphere {
         let t_close = ray.dir.dot(to_centre);
         // x_close − c = t_close·u_r − (c − p_r)
         let d2 = (ray.dir.scale(t_close) - to_centre).length_squared_wide();
-        let r2 = fx::wide_mul(self.radius.to_bits(), self.radius.to_bits());
+        let r2 = fx::wide_mul(self.radius.to_bits(), self.radius.to_bits()).unsigned_abs();
         if d2 > r2 {
             return None;
         }
         // r² − d² ≤ r² ≤ 2²⁰·2³², so a fits Q16.16.
-        let a = Fx::from_bits(isqrt((r2 - d2) as u64) as i32);
+        let a = Fx::from_bits(isqrt(r2 - d2) as i32);
         let mut t = t_close - a;
         if t < Fx::ZERO {
             t = t_close + a; // the origin is inside the sphere
@@ -107,7 +107,11 @@ impl Sphere {
         let r = self.radius.to_bits() as i64;
         let div = |c: Fx| {
             let n = (c.to_bits() as i64) << FRAC;
-            let q = if n >= 0 { (n + r / 2) / r } else { (n - r / 2) / r };
+            let q = if n >= 0 {
+                (n + r / 2) / r
+            } else {
+                (n - r / 2) / r
+            };
             // A point within rounding of the surface gives |q| ≤ 2¹⁶ plus a few units.
             Fx::from_bits(q.clamp(-(1 << FRAC), 1 << FRAC) as i32)
         };
@@ -130,7 +134,9 @@ mod tests {
 
     #[test]
     fn origin_inside_leaves_through_the_far_side() {
-        let hit = ball().intersect(&ray(Vec3::from_ints(0, 0, -10), -Vec3::Z)).unwrap();
+        let hit = ball()
+            .intersect(&ray(Vec3::from_ints(0, 0, -10), -Vec3::Z))
+            .unwrap();
         assert_eq!(hit.t, Fx::from_num(2));
         assert_eq!(hit.point, Vec3::from_ints(0, 0, -12));
     }
@@ -142,7 +148,9 @@ mod tests {
 
     #[test]
     fn tangent_ray_hits_at_closest_approach() {
-        let hit = ball().intersect(&ray(Vec3::from_ints(2, 0, 0), -Vec3::Z)).unwrap();
+        let hit = ball()
+            .intersect(&ray(Vec3::from_ints(2, 0, 0), -Vec3::Z))
+            .unwrap();
         assert_eq!(hit.t, Fx::from_num(10));
         assert_eq!(hit.normal, Vec3::X);
     }
@@ -161,11 +169,17 @@ mod tests {
         );
         assert!(matches!(
             Sphere::new(Vec3::from_ints(0, 2000, 0), Fx::ONE),
-            Err(Error::OutOfRange { what: "sphere centre", .. })
+            Err(Error::OutOfRange {
+                what: "sphere centre",
+                ..
+            })
         ));
         assert!(matches!(
             Sphere::new(Vec3::ZERO, Fx::from_num(1500)),
-            Err(Error::OutOfRange { what: "sphere radius", .. })
+            Err(Error::OutOfRange {
+                what: "sphere radius",
+                ..
+            })
         ));
     }
 }

@@ -3,7 +3,7 @@
 use core::ops::{Add, Neg, Sub};
 
 use crate::error::Error;
-use crate::fx::{self, Fx, FRAC};
+use crate::fx::{self, FRAC, Fx};
 use crate::isqrt::isqrt;
 
 /// A point or a direction with three Q16.16 components.
@@ -55,7 +55,7 @@ impl Vec3 {
         )
     }
 
-    /// A vector from `f32` components, each checked to be finite and within ±[`LIMIT`].
+    /// A vector from `f32` components, each checked to be finite and within ±[`LIMIT`](crate::LIMIT).
     ///
     /// `what` names the vector in the error message.
     ///
@@ -75,7 +75,7 @@ impl Vec3 {
         ))
     }
 
-    /// Checks that every component lies within ±[`LIMIT`].
+    /// Checks that every component lies within ±[`LIMIT`](crate::LIMIT).
     pub fn check_range(self, what: &'static str) -> Result<Self, Error> {
         fx::check_range(self.x, what)?;
         fx::check_range(self.y, what)?;
@@ -96,16 +96,15 @@ impl Vec3 {
         Vec3::new(fx::mul(self.x, k), fx::mul(self.y, k), fx::mul(self.z, k))
     }
 
-    /// The dot product as an exact Q32.32 raw value (`i64`, 2⁻³² units).
-    ///
-    /// Three products of Q16.16 values within ±2¹⁴ sum to well under 2⁶³, so this never
-    /// overflows for vectors in the render path.
+    /// The dot product as a Q32.32 raw value (`i64`, 2⁻³² units): exact wherever it fits,
+    /// which it always does in the render path (each product is below 2⁶² in magnitude).
+    /// Beyond that it saturates rather than wrap.
     #[inline]
     #[must_use]
     pub const fn dot_wide(self, o: Vec3) -> i64 {
         fx::wide_mul(self.x.to_bits(), o.x.to_bits())
-            + fx::wide_mul(self.y.to_bits(), o.y.to_bits())
-            + fx::wide_mul(self.z.to_bits(), o.z.to_bits())
+            .saturating_add(fx::wide_mul(self.y.to_bits(), o.y.to_bits()))
+            .saturating_add(fx::wide_mul(self.z.to_bits(), o.z.to_bits()))
     }
 
     /// The dot product, formed at 64 bits and rounded once to Q16.16 (saturating).
@@ -121,7 +120,9 @@ impl Vec3 {
     pub const fn cross(self, o: Vec3) -> Vec3 {
         /// `p·q − r·s`, formed at 64 bits and rounded once.
         const fn c(p: Fx, q: Fx, r: Fx, s: Fx) -> Fx {
-            fx::narrow(fx::wide_mul(p.to_bits(), q.to_bits()) - fx::wide_mul(r.to_bits(), s.to_bits()))
+            fx::narrow(
+                fx::wide_mul(p.to_bits(), q.to_bits()) - fx::wide_mul(r.to_bits(), s.to_bits()),
+            )
         }
         let (a, b) = (self, o);
         Vec3::new(
@@ -131,20 +132,23 @@ impl Vec3 {
         )
     }
 
-    /// ‖self‖² as an exact Q32.32 raw value.
+    /// ‖self‖² as an exact unsigned Q32.32 raw value: three squares below 2⁶² each, so it
+    /// never overflows.
     #[inline]
     #[must_use]
-    pub const fn length_squared_wide(self) -> i64 {
-        self.dot_wide(self)
+    pub const fn length_squared_wide(self) -> u64 {
+        const fn sq(c: Fx) -> u64 {
+            (c.to_bits() as i64).unsigned_abs().pow(2)
+        }
+        sq(self.x) + sq(self.y) + sq(self.z)
     }
 
     /// ‖self‖, truncated to Q16.16: `isqrt` of the exact Q32.32 square.
     #[inline]
     #[must_use]
     pub const fn length(self) -> Fx {
-        let root = isqrt(self.length_squared_wide() as u64);
-        // The square of a vector of Q16.16 components is below 3 · 2⁶², so its root is below
-        // 2^32 and fits; above i32::MAX it saturates.
+        let root = isqrt(self.length_squared_wide());
+        // The root is below √3 · 2³¹; above i32::MAX it saturates.
         if root > i32::MAX as u64 {
             Fx::MAX
         } else {
@@ -154,18 +158,34 @@ impl Vec3 {
 
     /// The unit vector along `self`, or `None` for the zero vector.
     ///
-    /// Each component is `(c · 2¹⁶) / ‖self‖`, rounded to nearest, so a unit vector's
-    /// length is 1 within a few units of 2⁻¹⁶.
+    /// The length is taken with 30 or more significant bits whatever the size of `self`: the
+    /// exact squared length is shifted up by an even number of bits `2s` until it nearly fills
+    /// 62 bits, so `isqrt` returns `‖self‖ · 2^(16+s)`. Each component is then divided by that
+    /// and rounded to nearest, so every component is within one unit of 2⁻¹⁶ of the exact unit
+    /// vector, even for vectors a few units of 2⁻¹⁶ long.
+    ///
+    /// ```
+    /// use fixray::{Fx, Vec3};
+    /// let tiny = Vec3::new(Fx::ZERO, Fx::from_bits(3), Fx::from_bits(-4));
+    /// assert_eq!(tiny.try_normalize(), Some(Vec3::new(Fx::ZERO, Fx::from_num(0.6), Fx::from_num(-0.8))));
+    /// ```
     #[must_use]
     pub fn try_normalize(self) -> Option<Vec3> {
-        let len = self.length().to_bits() as i64;
-        if len == 0 {
+        let square = self.length_squared_wide();
+        if square == 0 {
             return None;
         }
+        // 2s: the even shift that brings the square just below 2⁶².
+        let shift = square.leading_zeros().saturating_sub(2) & !1;
+        let length = isqrt(square << shift) as i64; // ‖self‖ · 2^(16 + shift/2), below 2³¹
         let div = |c: Fx| {
-            let n = (c.to_bits() as i64) << FRAC;
-            // Round half away from zero; |n / len| ≤ 2¹⁶ because |c| ≤ ‖self‖.
-            let q = if n >= 0 { (n + len / 2) / len } else { (n - len / 2) / len };
+            // |c| ≤ ‖self‖, so the numerator stays below 2⁴⁷ and the quotient within ±2¹⁶.
+            let n = (c.to_bits() as i64) << (FRAC + shift / 2);
+            let q = if n >= 0 {
+                (n + length / 2) / length
+            } else {
+                (n - length / 2) / length
+            };
             Fx::from_bits(q as i32)
         };
         Some(Vec3::new(div(self.x), div(self.y), div(self.z)))
@@ -206,7 +226,11 @@ impl Neg for Vec3 {
     type Output = Vec3;
     #[inline]
     fn neg(self) -> Vec3 {
-        Vec3::new(self.x.saturating_neg(), self.y.saturating_neg(), self.z.saturating_neg())
+        Vec3::new(
+            self.x.saturating_neg(),
+            self.y.saturating_neg(),
+            self.z.saturating_neg(),
+        )
     }
 }
 
@@ -222,7 +246,7 @@ mod tests {
     fn long_vectors_square_without_overflow() {
         // 200² = 40 000 does not fit Q16.16, but the wide square does, and so does its root.
         let a = v(200.0, 0.0, 0.0);
-        assert_eq!(a.length_squared_wide(), 40_000i64 << 32);
+        assert_eq!(a.length_squared_wide(), 40_000u64 << 32);
         assert_eq!(a.length(), Fx::from_num(200));
         let b = v(1000.0, -1000.0, 1000.0);
         assert_eq!(b.dot_wide(b), 3_000_000i64 << 32);
@@ -247,6 +271,20 @@ mod tests {
         assert_eq!(n, v(0.6, 0.8, 0.0));
         assert_eq!(Vec3::ZERO.try_normalize(), None);
         assert_eq!(Vec3::ZERO.normalize_or_zero(), Vec3::ZERO);
+    }
+
+    #[test]
+    fn extreme_vectors_neither_wrap_nor_panic() {
+        let big = Vec3::new(Fx::MAX, Fx::MIN, Fx::MAX);
+        assert_eq!(
+            big.length_squared_wide(),
+            3 * (1u64 << 62) - 2 * (1u64 << 32) + 2
+        );
+        assert_eq!(big.dot_wide(big), i64::MAX);
+        assert_eq!(big.length(), Fx::MAX);
+        let n = big.try_normalize().unwrap();
+        let third = Fx::from_num(0.57735);
+        assert!((n.x - third).abs() < Fx::from_num(0.0001), "{n:?}");
     }
 
     #[test]

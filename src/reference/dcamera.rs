@@ -1,0 +1,209 @@
+//! [`DCamera`]: the pinhole camera of section 4.1, and the same camera aimed anywhere.
+
+use super::{DRay, DVec3};
+
+/// A pinhole camera: an eye and a view screen of `rows × cols` pixels in front of it.
+///
+/// The screen is the rectangle `width × height` centred on the point `centre` (relative to
+/// the eye) and spanned by the unit vectors `right` and `up`. Following the chapter, the
+/// *pixel centre* of chapter row `i` (counted upward from the bottom) and column `j` is
+///
+/// `p = centre + right·(−width/2 + width/cols·(j + ½)) + up·(−height/2 + height/rows·(i + ½))`
+///
+/// and the ray through it starts at the eye with direction `p / ‖p‖`.
+///
+/// [`ray`](Self::ray) takes *display* coordinates instead: row 0 is the top of the picture,
+/// so display row `row` is chapter row `i = rows − 1 − row`. Column 0 is on the left in both.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DCamera {
+    eye: DVec3,
+    centre: DVec3,
+    right: DVec3,
+    up: DVec3,
+    width: f64,
+    height: f64,
+    rows: u16,
+    cols: u16,
+}
+
+impl DCamera {
+    /// The chapter's camera: the eye at the origin looking down −z, and a `w × h` screen at
+    /// distance `z_p`, centred on `(0, 0, −z_p)`, with `rows × cols` pixels.
+    ///
+    /// `None` unless `w`, `h` and `z_p` are finite and positive and `rows`, `cols` non-zero.
+    #[must_use]
+    pub fn pinhole(w: f64, h: f64, z_p: f64, rows: u16, cols: u16) -> Option<DCamera> {
+        let positive = |x: f64| x.is_finite() && x > 0.0;
+        if !(positive(w) && positive(h) && positive(z_p)) || rows == 0 || cols == 0 {
+            return None;
+        }
+        let centre = DVec3::new(0.0, 0.0, -z_p);
+        let (right, up) = (DVec3::X, DVec3::Y);
+        Some(DCamera {
+            eye: DVec3::ZERO,
+            centre,
+            right,
+            up,
+            width: w,
+            height: h,
+            rows,
+            cols,
+        })
+    }
+
+    /// A camera at `eye` looking at `target`, with `up` pointing roughly up the picture and a
+    /// vertical field of view of `fov_y_degrees`, for `cols × rows` pixels.
+    ///
+    /// This is the pinhole camera turned to face `f = (target − eye)/‖target − eye‖`, with its
+    /// screen at distance 1: `right = (f × up)/‖f × up‖`, `u = right × f`, height
+    /// `hh = 2·tan(fov/2)` and width `ww = hh·cols/rows`, so pixels are square.
+    ///
+    /// `None` if the inputs are not finite, `eye == target`, `up` is parallel to the view
+    /// direction, the field of view is not strictly between 0° and 180°, or `cols` or `rows`
+    /// is zero.
+    #[must_use]
+    pub fn look_at(
+        eye: DVec3,
+        target: DVec3,
+        up: DVec3,
+        fov_y_degrees: f64,
+        cols: u16,
+        rows: u16,
+    ) -> Option<DCamera> {
+        let fov_ok = fov_y_degrees > 0.0 && fov_y_degrees < 180.0;
+        if !(eye.is_finite() && fov_ok) || rows == 0 || cols == 0 {
+            return None;
+        }
+        let f = (target - eye).try_normalize()?;
+        let right = f.cross(up).try_normalize()?;
+        let u = right.cross(f);
+        let half_angle = fov_y_degrees.to_radians() / 2.0;
+        let height = 2.0 * libm::tan(half_angle);
+        let width = height * f64::from(cols) / f64::from(rows);
+        Some(DCamera {
+            eye,
+            centre: f,
+            right,
+            up: u,
+            width,
+            height,
+            rows,
+            cols,
+        })
+    }
+
+    /// Pixel rows in the picture.
+    #[inline]
+    #[must_use]
+    pub const fn rows(&self) -> u16 {
+        self.rows
+    }
+
+    /// Pixel columns in the picture.
+    #[inline]
+    #[must_use]
+    pub const fn cols(&self) -> u16 {
+        self.cols
+    }
+
+    /// The eye: where every ray starts.
+    #[inline]
+    #[must_use]
+    pub const fn eye(&self) -> DVec3 {
+        self.eye
+    }
+
+    /// The pixel centre of display pixel (`row`, `col`) on the view screen, in world
+    /// coordinates.
+    ///
+    /// Coordinates past the last row or column extrapolate the grid; they do not fail.
+    #[must_use]
+    pub fn pixel_centre(&self, row: u16, col: u16) -> DVec3 {
+        self.eye + self.towards(row, col)
+    }
+
+    /// From the eye to the pixel centre of display pixel (`row`, `col`): the chapter's `p`.
+    fn towards(&self, row: u16, col: u16) -> DVec3 {
+        // Chapter row i counts up from the bottom; display rows count down from the top.
+        let i = f64::from(self.rows) - 1.0 - f64::from(row);
+        let j = f64::from(col);
+        let x = -self.width / 2.0 + self.width / f64::from(self.cols) * (j + 0.5);
+        let y = -self.height / 2.0 + self.height / f64::from(self.rows) * (i + 0.5);
+        self.centre + self.right * x + self.up * y
+    }
+
+    /// The ray shot through the pixel centre of display pixel (`row`, `col`).
+    #[must_use]
+    pub fn ray(&self, row: u16, col: u16) -> DRay {
+        let p = self.towards(row, col);
+        // The screen is never at the eye (its centre is a non-zero distance straight ahead),
+        // so p has a direction.
+        DRay::new_unchecked(self.eye, p.normalize_or_zero())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn close(a: DVec3, b: DVec3) -> bool {
+        (a - b).length() < 1e-12
+    }
+
+    #[test]
+    fn the_chapter_grid_has_its_middle_pixel_on_the_axis() {
+        // M = 3 rows by N = 5 columns on a 5 × 3 screen at z_p = 1: 1 × 1 pixels.
+        let cam = DCamera::pinhole(5.0, 3.0, 1.0, 3, 5).unwrap();
+        assert_eq!(cam.pixel_centre(1, 2), DVec3::new(0.0, 0.0, -1.0));
+        assert_eq!(cam.ray(1, 2).dir(), -DVec3::Z);
+        assert_eq!(cam.ray(1, 2).origin(), DVec3::ZERO);
+    }
+
+    #[test]
+    fn display_row_0_is_the_top_and_col_0_the_left() {
+        let cam = DCamera::pinhole(5.0, 3.0, 1.0, 3, 5).unwrap();
+        assert_eq!(cam.pixel_centre(0, 0), DVec3::new(-2.0, 1.0, -1.0));
+        assert_eq!(cam.pixel_centre(2, 4), DVec3::new(2.0, -1.0, -1.0));
+        let d = cam.ray(0, 0).dir();
+        assert!(close(d, DVec3::new(-2.0, 1.0, -1.0) / libm::sqrt(6.0)));
+    }
+
+    #[test]
+    fn look_at_down_minus_z_is_the_pinhole_camera() {
+        // hh = 2·tan(45°) = 2 at distance 1, ww = 2 · 4/2 = 4.
+        let cam = DCamera::look_at(DVec3::ZERO, -DVec3::Z, DVec3::Y, 90.0, 4, 2).unwrap();
+        let pin = DCamera::pinhole(4.0, 2.0, 1.0, 2, 4).unwrap();
+        for row in 0..2 {
+            for col in 0..4 {
+                assert!(
+                    close(cam.ray(row, col).dir(), pin.ray(row, col).dir()),
+                    "{row},{col}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn look_at_starts_rays_at_the_eye_and_aims_at_the_target() {
+        let eye = DVec3::new(0.0, 2.0, 5.0);
+        let target = DVec3::new(0.0, 2.0, -5.0);
+        let cam = DCamera::look_at(eye, target, DVec3::Y, 60.0, 3, 3).unwrap();
+        assert_eq!(cam.ray(1, 1).origin(), eye);
+        assert!(close(cam.ray(1, 1).dir(), -DVec3::Z));
+        assert!(close(cam.pixel_centre(1, 1), DVec3::new(0.0, 2.0, 4.0)));
+        assert!(cam.ray(0, 1).dir().y > 0.0, "row 0 looks up");
+        assert!(cam.ray(1, 0).dir().x < 0.0, "col 0 looks left");
+    }
+
+    #[test]
+    fn degenerate_cameras_are_refused() {
+        assert_eq!(DCamera::pinhole(0.0, 1.0, 1.0, 2, 2), None);
+        assert_eq!(DCamera::pinhole(1.0, 1.0, f64::NAN, 2, 2), None);
+        assert_eq!(DCamera::pinhole(1.0, 1.0, 1.0, 0, 2), None);
+        let (o, y) = (DVec3::ZERO, DVec3::Y);
+        assert_eq!(DCamera::look_at(o, o, y, 60.0, 2, 2), None);
+        assert_eq!(DCamera::look_at(o, y, y, 60.0, 2, 2), None);
+        assert_eq!(DCamera::look_at(o, -DVec3::Z, y, 180.0, 2, 2), None);
+        assert_eq!(DCamera::look_at(o, -DVec3::Z, y, 60.0, 2, 0), None);
+    }
+}

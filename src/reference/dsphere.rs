@@ -1,0 +1,143 @@
+//! [`DSphere`]: a sphere and the two-step ray-sphere intersection of section 4.4.
+
+use super::{DHit, DRay, DVec3, FAR};
+
+/// A sphere with centre `c` and radius `r > 0`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DSphere {
+    centre: DVec3,
+    radius: f64,
+}
+
+impl DSphere {
+    /// The sphere of `radius` about `centre`.
+    ///
+    /// `None` unless `radius` is finite and greater than zero and `centre` is finite.
+    #[must_use]
+    pub fn new(centre: DVec3, radius: f64) -> Option<DSphere> {
+        if centre.is_finite() && radius.is_finite() && radius > 0.0 {
+            Some(DSphere { centre, radius })
+        } else {
+            None
+        }
+    }
+
+    /// The centre `c`.
+    #[inline]
+    #[must_use]
+    pub const fn centre(&self) -> DVec3 {
+        self.centre
+    }
+
+    /// The radius `r`.
+    #[inline]
+    #[must_use]
+    pub const fn radius(&self) -> f64 {
+        self.radius
+    }
+
+    /// Where `ray` first meets the sphere, in the chapter's two steps.
+    ///
+    /// 1. Closest approach: `t_close = u_r·(c − p_r)`, `x_close = p_r + t_close·u_r`, and
+    ///    `d² = ‖x_close − c‖²`. If `d² > r²` the ray passes the sphere by: a miss.
+    /// 2. Hit: `a = √(r² − d²)` and the ray crosses the surface at `t_close ± a`. The nearer
+    ///    crossing `t_close − a` is taken, unless it is behind the origin (`< 0`), which means
+    ///    the origin is inside the sphere and the ray leaves it at `t_close + a`.
+    ///
+    /// A hit behind the origin (`t < 0`) or beyond [`FAR`] is a miss. A ray that just grazes
+    /// the sphere (`d² = r²`) hits it once, at `x_close`. The hit normal `(x − c)/r` points
+    /// outward, even when the ray starts inside. The hit's `object` is 0.
+    #[must_use]
+    pub fn intersect(&self, ray: &DRay) -> Option<DHit> {
+        let t_close = ray.dir().dot(self.centre - ray.origin());
+        let x_close = ray.at(t_close);
+        let d2 = (x_close - self.centre).length_squared();
+        let r2 = self.radius * self.radius;
+        if d2 > r2 {
+            return None;
+        }
+        let a = libm::sqrt(r2 - d2);
+        let mut t = t_close - a;
+        if t < 0.0 {
+            t = t_close + a;
+        }
+        if !(0.0..=FAR).contains(&t) {
+            return None;
+        }
+        let point = ray.at(t);
+        let normal = (point - self.centre) / self.radius;
+        Some(DHit {
+            t,
+            point,
+            normal,
+            object: 0,
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The unit sphere five units down the −z axis.
+    fn ahead() -> DSphere {
+        DSphere::new(DVec3::new(0.0, 0.0, -5.0), 1.0).unwrap()
+    }
+
+    fn down_z(x: f64, y: f64, z: f64) -> DRay {
+        DRay::new(DVec3::new(x, y, z), -DVec3::Z).unwrap()
+    }
+
+    #[test]
+    fn a_central_ray_hits_the_near_side() {
+        // t_close = 5, d = 0, a = 1: t = 4 at (0, 0, −4), facing back at the eye.
+        let hit = ahead().intersect(&down_z(0.0, 0.0, 0.0)).unwrap();
+        assert_eq!(hit.t, 4.0);
+        assert_eq!(hit.point, DVec3::new(0.0, 0.0, -4.0));
+        assert_eq!(hit.normal, DVec3::Z);
+    }
+
+    #[test]
+    fn a_tangent_ray_hits_at_x_close() {
+        // d = r: a = 0 and the single hit is x_close itself.
+        let hit = ahead().intersect(&down_z(0.0, 1.0, 0.0)).unwrap();
+        assert_eq!(hit.t, 5.0);
+        assert_eq!(hit.point, DVec3::new(0.0, 1.0, -5.0));
+        assert_eq!(hit.normal, DVec3::Y);
+        assert_eq!(ahead().intersect(&down_z(0.0, 1.5, 0.0)), None);
+    }
+
+    #[test]
+    fn from_inside_the_ray_leaves_through_the_far_side() {
+        // Origin at the centre: t_close − a = −1 < 0, so t = t_close + a = 1.
+        let hit = ahead().intersect(&down_z(0.0, 0.0, -5.0)).unwrap();
+        assert_eq!(hit.t, 1.0);
+        assert_eq!(hit.point, DVec3::new(0.0, 0.0, -6.0));
+        assert_eq!(hit.normal, -DVec3::Z, "the normal still points outward");
+    }
+
+    #[test]
+    fn a_sphere_behind_the_origin_is_missed() {
+        // t_close = −5: both crossings, −6 and −4, are behind the origin.
+        let behind = DSphere::new(DVec3::new(0.0, 0.0, 5.0), 1.0).unwrap();
+        assert_eq!(behind.intersect(&down_z(0.0, 0.0, 0.0)), None);
+    }
+
+    #[test]
+    fn hits_beyond_far_are_misses() {
+        let far = DSphere::new(DVec3::new(0.0, 0.0, -(FAR + 2.0)), 1.0).unwrap();
+        assert_eq!(far.intersect(&down_z(0.0, 0.0, 0.0)), None);
+        let edge = DSphere::new(DVec3::new(0.0, 0.0, -(FAR + 1.0)), 1.0).unwrap();
+        assert_eq!(
+            edge.intersect(&down_z(0.0, 0.0, 0.0)).map(|h| h.t),
+            Some(FAR)
+        );
+    }
+
+    #[test]
+    fn the_radius_must_be_positive() {
+        assert_eq!(DSphere::new(DVec3::ZERO, 0.0), None);
+        assert_eq!(DSphere::new(DVec3::ZERO, -1.0), None);
+        assert_eq!(DSphere::new(DVec3::ZERO, f64::NAN), None);
+    }
+}

@@ -1,0 +1,97 @@
+//! [`render_row`] and [`render`]: the chapter's raycasting loop over every pixel.
+
+use super::{DCamera, DScene};
+use crate::Rgb;
+
+/// Shades display row `row` (0 is the top) into `out`, one colour per column, left to right.
+///
+/// For each column this is the chapter's loop body: build the ray through the pixel centre,
+/// `shoot` it into the scene, and `shade` what it hit.
+///
+/// # Panics
+///
+/// If `out.len()` is not `camera.cols()`: the reference is test machinery, and a buffer of
+/// the wrong size is a bug in the test.
+pub fn render_row<const N: usize>(scene: &DScene<N>, camera: &DCamera, row: u16, out: &mut [Rgb]) {
+    assert_eq!(
+        out.len(),
+        usize::from(camera.cols()),
+        "row buffer length must equal cols"
+    );
+    for (col, pixel) in (0..camera.cols()).zip(out.iter_mut()) {
+        *pixel = scene.trace(&camera.ray(row, col)).1;
+    }
+}
+
+/// Shades the whole picture into `out`, row-major with row 0 at the top: pixel (`row`, `col`)
+/// is `out[row · cols + col]`.
+///
+/// # Panics
+///
+/// If `out.len()` is not `camera.rows() · camera.cols()`.
+pub fn render<const N: usize>(scene: &DScene<N>, camera: &DCamera, out: &mut [Rgb]) {
+    let cols = usize::from(camera.cols());
+    let pixels = usize::from(camera.rows()) * cols;
+    assert_eq!(
+        out.len(),
+        pixels,
+        "frame buffer length must equal rows · cols"
+    );
+    for (row, line) in (0..camera.rows()).zip(out.chunks_exact_mut(cols)) {
+        render_row(scene, camera, row, line);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::reference::{DLight, DObject, DPlane, DSphere, DVec3};
+
+    const SKY: Rgb = Rgb::new(0, 0, 255);
+    const BALL: Rgb = Rgb::new(255, 0, 0);
+    const FLOOR: Rgb = Rgb::new(0, 255, 0);
+
+    /// A ball straight ahead above a floor, lit only by an ambient of 1 so colours are exact.
+    fn scene() -> DScene<2> {
+        let mut s = DScene::new(DLight::new(DVec3::ZERO, 0.0), 1.0, SKY);
+        let ball = DSphere::new(DVec3::new(0.0, 0.0, -4.0), 1.0).unwrap();
+        let floor = DPlane::new(DVec3::new(0.0, -2.0, 0.0), DVec3::Y).unwrap();
+        s.push(DObject::new(ball.into(), BALL)).unwrap();
+        s.push(DObject::new(floor.into(), FLOOR)).unwrap();
+        s
+    }
+
+    #[test]
+    fn the_picture_is_the_sky_the_ball_and_the_floor() {
+        let cam = DCamera::pinhole(3.0, 3.0, 1.0, 3, 3).unwrap();
+        let mut frame = [Rgb::BLACK; 9];
+        render(&scene(), &cam, &mut frame);
+        #[rustfmt::skip]
+        let expected = [
+            SKY,   SKY,  SKY,
+            SKY,   BALL, SKY,
+            FLOOR, FLOOR, FLOOR,
+        ];
+        assert_eq!(frame, expected);
+    }
+
+    #[test]
+    fn a_row_matches_the_same_row_of_the_frame() {
+        let cam = DCamera::look_at(DVec3::ZERO, -DVec3::Z, DVec3::Y, 90.0, 5, 4).unwrap();
+        let mut frame = [Rgb::BLACK; 20];
+        render(&scene(), &cam, &mut frame);
+        let mut line = [Rgb::BLACK; 5];
+        for row in 0..4u16 {
+            render_row(&scene(), &cam, row, &mut line);
+            let start = usize::from(row) * 5;
+            assert_eq!(line, frame[start..start + 5]);
+        }
+    }
+
+    #[test]
+    #[should_panic(expected = "rows · cols")]
+    fn a_wrong_sized_frame_is_refused() {
+        let cam = DCamera::pinhole(3.0, 3.0, 1.0, 3, 3).unwrap();
+        render(&scene(), &cam, &mut [Rgb::BLACK; 8]);
+    }
+}
