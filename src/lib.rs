@@ -87,3 +87,8 @@ pub use render::{render, render_row};
 pub use scene::{Object, Scene, Shape};
 pub use sphere::Sphere;
 pub use vec3::Vec3;
+
+/// The README's Rust examples, compiled and run as doc tests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;

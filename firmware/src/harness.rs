@@ -1,0 +1,135 @@
+//! The measured run: calibrate the counter, render the frame row by row, report, exit.
+//!
+//! What it prints, one `key=value` line per topic, is what `scripts/firmware.sh` parses:
+//!
+//! ```text
+//! board=microbit target=thumbv6m-none-eabi renderer=fixed
+//! counter: SysTick, 16 MHz core clock instructions_per_tick=62.5
+//! calibration: expected=20000000 measured=20000062
+//! setup: instructions=3312
+//! frame: cols=160 rows=128 hash=0xe37b0dc1 instructions=165596187 per_pixel=8085.7
+//! memory: flash=30220 static_ram=4 peak_stack=1904
+//! ```
+
+use core::fmt::{self, Debug, Display};
+
+use fixray::{FrameHash, Rgb};
+use semihosting::{eprintln, println};
+
+use crate::{calibrate, counter, exit, memory, stack};
+
+/// Columns of the frame.
+pub const COLS: u16 = 160;
+/// Rows of the frame.
+pub const ROWS: u16 = 128;
+
+/// A renderer the firmware can measure: built once, then asked for one row at a time.
+pub trait Renderer: Sized {
+    /// Its name in the report and the script's table.
+    const NAME: &'static str;
+    /// Why it refused.
+    type Error: Debug;
+
+    /// Sets up the demo scene for a `cols × rows` frame.
+    fn new(cols: u16, rows: u16) -> Result<Self, Self::Error>;
+
+    /// Renders row `row` (0 at the top) into `out`, `cols` pixels long.
+    fn render_row(&self, row: u16, out: &mut [Rgb]) -> Result<(), Self::Error>;
+}
+
+/// Renders and measures one frame with `R`, prints the report and ends the QEMU run.
+///
+/// The peak stack it reports is that of the set-up and the frame (painted after the first
+/// reports, read before the last), counted from the top of the stack, so it includes `main`
+/// and the row buffer but not the printing.
+pub fn run<R: Renderer>() -> ! {
+    println!(
+        "board={} target={} renderer={}",
+        crate::MACHINE,
+        crate::TARGET,
+        R::NAME
+    );
+    check_counter();
+
+    stack::paint();
+    let before = counter::ticks();
+    let renderer = R::new(COLS, ROWS).unwrap_or_else(|e| refused("set-up", e));
+    let setup = counter::ticks().wrapping_sub(before);
+    println!(
+        "setup: instructions={}",
+        counter::instructions(setup.into())
+    );
+
+    let (hash, instructions) = frame(&renderer);
+    let peak = stack::peak();
+    let pixels = u64::from(COLS) * u64::from(ROWS);
+    let per_pixel = Tenths::of((instructions, pixels));
+    println!(
+        "frame: cols={COLS} rows={ROWS} hash={hash:#010x} instructions={instructions} \
+         per_pixel={per_pixel}"
+    );
+
+    let usage = memory::usage();
+    println!(
+        "memory: flash={} static_ram={} peak_stack={peak}",
+        usage.flash, usage.static_ram
+    );
+    exit::with(exit::SUCCESS)
+}
+
+/// Starts the counter and times the loop of known length; a counter that disagrees ends the
+/// run, since every figure after it would be wrong.
+fn check_counter() {
+    counter::start();
+    let per_tick = Tenths::of(counter::PER_TICK);
+    println!(
+        "counter: {} instructions_per_tick={per_tick}",
+        counter::NAME
+    );
+    let calibration = calibrate::run();
+    let (expected, measured) = (calibration.expected, calibration.measured);
+    println!("calibration: expected={expected} measured={measured}");
+    if !calibration.agrees() {
+        let tolerance = calibrate::Calibration::TOLERANCE;
+        eprintln!("the counter is off by more than {tolerance} instructions");
+        exit::with(exit::COUNTER_WRONG);
+    }
+}
+
+/// Renders the frame one row at a time into a single row buffer: its [`FrameHash`] and the
+/// instructions the `render_row` calls took (hashing the rows is not counted).
+fn frame(renderer: &impl Renderer) -> (u32, u64) {
+    let mut row = [Rgb::BLACK; COLS as usize];
+    let mut hash = FrameHash::new();
+    let mut ticks = 0_u64;
+    for y in 0..ROWS {
+        let before = counter::ticks();
+        let rendered = renderer.render_row(y, &mut row);
+        ticks += u64::from(counter::ticks().wrapping_sub(before));
+        rendered.unwrap_or_else(|e| refused("a row", e));
+        hash.update(&row);
+    }
+    (hash.finish(), counter::instructions(ticks))
+}
+
+/// Reports a renderer's refusal and ends the run.
+fn refused(what: &str, error: impl Debug) -> ! {
+    eprintln!("the renderer refused {what}: {error:?}");
+    exit::with(exit::RENDER_FAILED)
+}
+
+/// A quotient printed to one decimal place (rounded down).
+struct Tenths(u64);
+
+impl Tenths {
+    /// `numerator / denominator` in tenths.
+    fn of((numerator, denominator): (u64, u64)) -> Self {
+        Tenths(numerator * 10 / denominator)
+    }
+}
+
+impl Display for Tenths {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}.{}", self.0 / 10, self.0 % 10)
+    }
+}

@@ -1,0 +1,52 @@
+//! fixray's demo scene on three microcontrollers under QEMU, rendered and measured.
+//!
+//! Each binary (`fixed`, `reference`) renders the demo scene at [`COLS`] × [`ROWS`] one row at
+//! a time, so it fits the 16 KiB of a Cortex-M0, and prints over semihosting what
+//! `scripts/firmware.sh` turns into a table: the [`fixray::FrameHash`] of the frame (the host
+//! computes the same one), the instructions the rows took, the flash image, the static RAM and
+//! the peak stack. It then exits QEMU with status 0, or with a non-zero [`exit`] code on any
+//! failure; a panic exits with 101 (semihosting's panic handler).
+//!
+//! | target | board (QEMU machine) | instruction counter |
+//! |---|---|---|
+//! | `thumbv6m-none-eabi` | micro:bit, Cortex-M0 (`microbit`) | SysTick on the 16 MHz core clock |
+//! | `thumbv7em-none-eabihf` | MPS2 AN386, Cortex-M4F (`mps2-an386`) | CMSDK APB timer 0, 25 MHz |
+//! | `riscv32imc-unknown-none-elf` | RV32, ESP32-C3 class (`virt`) | `minstret` |
+//!
+//! QEMU runs with `-icount shift=0`: its virtual clock advances exactly one nanosecond per
+//! guest instruction, so a timer of `f` MHz ticks once every `1000 / f` instructions. That
+//! counts instructions, not cycles. Before each frame the [`calibrate`] module times a loop of
+//! known length and refuses to go on if the counter disagrees.
+//!
+//! The modules, one concept each: [`counter`] (the board's instruction counter),
+//! [`calibrate`] (the loop of known length), [`stack`] (paint and measure the stack),
+//! [`memory`] (flash and static RAM from the linker's symbols), [`fault`] (faults exit QEMU
+//! non-zero), [`exit`] (the exit statuses), [`harness`] (the measured frame, driven through
+//! the [`Renderer`] trait). `build.rs` picks each board's memory layout from `memory/`.
+//!
+//! Run one firmware from this directory with, for example,
+//! `cargo run --release --target thumbv6m-none-eabi --bin fixed`: the runners in
+//! `.cargo/config.toml` start QEMU. `scripts/firmware.sh` runs them all.
+
+#![no_std]
+
+#[cfg(not(any(board = "microbit", board = "mps2_an386", board = "virt")))]
+compile_error!(
+    "fixray-firmware builds for thumbv6m-none-eabi, thumbv7em-none-eabihf or \
+     riscv32imc-unknown-none-elf only (pass --target)"
+);
+
+pub mod calibrate;
+pub mod counter;
+pub mod exit;
+pub mod fault;
+pub mod harness;
+pub mod memory;
+pub mod stack;
+
+pub use harness::{COLS, ROWS, Renderer, run};
+
+/// The target triple this firmware was built for.
+pub const TARGET: &str = env!("FIRMWARE_TARGET");
+/// The QEMU machine (`-machine`) this firmware runs on.
+pub const MACHINE: &str = env!("FIRMWARE_MACHINE");
