@@ -1,0 +1,130 @@
+//! The [`Framebuffer`] as an embedded-graphics image and draw target.
+//!
+//! A frame stores [`Rgb`](crate::Rgb), which is [`Rgb888`] by another name, so that is its colour on both
+//! sides: `Image::new(&frame, point)` draws it like any other image, and anything
+//! embedded-graphics can draw (text, a frame rate, a crosshair) can be drawn onto it.
+//! [`Framebuffer::draw_at`] draws it on a display of any [`FromRgb`] colour, dithered the
+//! same way as a streamed render.
+
+use core::convert::Infallible;
+
+use embedded_graphics::draw_target::DrawTarget;
+use embedded_graphics::image::{GetPixel, ImageDrawable};
+use embedded_graphics::pixelcolor::Rgb888;
+use embedded_graphics::prelude::{Dimensions, OriginDimensions, Pixel, Point, Size};
+use embedded_graphics::primitives::Rectangle;
+
+use super::color::{FromRgb, converted};
+use crate::framebuffer::Framebuffer;
+
+/// `W` or `H` as an embedded-graphics dimension; no frame that fits in memory is wider.
+const fn dimension(n: usize) -> u32 {
+    if n > i32::MAX as usize {
+        i32::MAX as u32
+    } else {
+        n as u32
+    }
+}
+
+impl<const W: usize, const H: usize> OriginDimensions for Framebuffer<W, H> {
+    fn size(&self) -> Size {
+        Size::new(dimension(W), dimension(H))
+    }
+}
+
+impl<const W: usize, const H: usize> DrawTarget for Framebuffer<W, H> {
+    type Color = Rgb888;
+    type Error = Infallible;
+
+    /// Sets each pixel; pixels outside the frame are skipped, as embedded-graphics expects.
+    fn draw_iter<I>(&mut self, pixels: I) -> Result<(), Infallible>
+    where
+        I: IntoIterator<Item = Pixel<Rgb888>>,
+    {
+        for Pixel(at, colour) in pixels {
+            if let (Ok(x), Ok(y)) = (usize::try_from(at.x), usize::try_from(at.y)) {
+                self.set_pixel(x, y, colour.into());
+            }
+        }
+        Ok(())
+    }
+}
+
+impl<const W: usize, const H: usize> GetPixel for Framebuffer<W, H> {
+    type Color = Rgb888;
+
+    fn pixel(&self, at: Point) -> Option<Rgb888> {
+        let (x, y) = (usize::try_from(at.x).ok()?, usize::try_from(at.y).ok()?);
+        Framebuffer::pixel(self, x, y).map(Rgb888::from)
+    }
+}
+
+impl<const W: usize, const H: usize> ImageDrawable for Framebuffer<W, H> {
+    type Color = Rgb888;
+
+    fn draw<D>(&self, target: &mut D) -> Result<(), D::Error>
+    where
+        D: DrawTarget<Color = Rgb888>,
+    {
+        let pixels = self.rows().as_flattened().iter();
+        target.fill_contiguous(&self.bounding_box(), pixels.map(|&c| Rgb888::from(c)))
+    }
+
+    /// Draws `area` of the frame at the target's origin; an area not wholly inside the frame
+    /// draws nothing, as for embedded-graphics' own images.
+    fn draw_sub_image<D>(&self, target: &mut D, area: &Rectangle) -> Result<(), D::Error>
+    where
+        D: DrawTarget<Color = Rgb888>,
+    {
+        let Some(bottom_right) = area.bottom_right() else {
+            return Ok(());
+        };
+        if area.top_left.x < 0 || area.top_left.y < 0 || !self.bounding_box().contains(bottom_right)
+        {
+            return Ok(());
+        }
+        let (x0, y0) = (area.top_left.x as usize, area.top_left.y as usize);
+        let (w, h) = (area.size.width as usize, area.size.height as usize);
+        let pixels = self.rows()[y0..y0 + h]
+            .iter()
+            .flat_map(|row| &row[x0..x0 + w])
+            .map(|&c| Rgb888::from(c));
+        target.fill_contiguous(&Rectangle::new(Point::zero(), area.size), pixels)
+    }
+}
+
+impl<const W: usize, const H: usize> Framebuffer<W, H> {
+    /// Draws the frame with its top left pixel at display point `top_left`, converted to the
+    /// display's colour by [`FromRgb`], in one `fill_contiguous` call.
+    ///
+    /// For dithered colours the pattern is keyed on display points, so this draws exactly the
+    /// pixels a streamed [`Viewport`](crate::Viewport) render of the same picture would.
+    /// A frame placed so that its far corner would lie past `i32::MAX` draws nothing.
+    ///
+    /// ```
+    /// use embedded_graphics::{pixelcolor::BinaryColor, prelude::*};
+    /// use embedded_graphics_simulator::SimulatorDisplay;
+    /// use fixray::{Framebuffer, Rgb};
+    /// let mut frame = Framebuffer::<8, 8>::new();
+    /// frame.rows_mut()[0] = [Rgb::WHITE; 8];
+    /// let mut oled = SimulatorDisplay::<BinaryColor>::new(Size::new(128, 64));
+    /// frame.draw_at(Point::new(10, 20), &mut oled).unwrap();
+    /// assert_eq!(oled.get_pixel(Point::new(17, 20)), BinaryColor::On);
+    /// assert_eq!(oled.get_pixel(Point::new(17, 21)), BinaryColor::Off);
+    /// ```
+    pub fn draw_at<D>(&self, top_left: Point, display: &mut D) -> Result<(), D::Error>
+    where
+        D: DrawTarget,
+        D::Color: FromRgb,
+    {
+        let size = OriginDimensions::size(self);
+        let fits = top_left.x.checked_add_unsigned(size.width).is_some()
+            && top_left.y.checked_add_unsigned(size.height).is_some();
+        if !fits {
+            return Ok(());
+        }
+        let area = Rectangle::new(top_left, size);
+        let lines = self.rows().iter().map(|line| line.as_slice());
+        display.fill_contiguous(&area, converted::<D::Color>(lines, top_left))
+    }
+}
