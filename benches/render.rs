@@ -5,9 +5,9 @@
 //! cargo bench --bench render
 //! ```
 
-use criterion::{criterion_group, criterion_main, Criterion};
+use criterion::{Criterion, criterion_group, criterion_main};
 use fixray::reference::{self, DCamera, DScene};
-use fixray::{demo, render, Framebuffer, Rgb};
+use fixray::{Framebuffer, Rgb, demo, render};
 use std::hint::black_box;
 
 const W: u16 = 160;
@@ -18,8 +18,14 @@ fn frame(c: &mut Criterion) {
     let camera = demo::camera(W, H).unwrap();
     let dscene = DScene::from_scene(&scene).unwrap();
     let h = demo::SCREEN_HEIGHT as f64;
-    let dcamera =
-        DCamera::pinhole(h * W as f64 / H as f64, h, demo::SCREEN_DISTANCE as f64, H, W).unwrap();
+    let dcamera = DCamera::pinhole(
+        h * W as f64 / H as f64,
+        h,
+        demo::SCREEN_DISTANCE as f64,
+        H,
+        W,
+    )
+    .unwrap();
 
     let mut group = c.benchmark_group("demo 160x128 frame");
     let mut fixed = Box::new(Framebuffer::<{ W as usize }, { H as usize }>::new());
