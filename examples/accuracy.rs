@@ -1,72 +1,100 @@
 //! Prints how closely the fixed-point renderer matches the f64 reference, per scene and
-//! resolution.
+//! resolution, and can write a difference image.
 //!
 //! ```text
 //! cargo run --release --example accuracy
+//! cargo run --release --example accuracy -- --diff out/classic-diff.ppm
 //! ```
 //!
-//! Columns: pixels whose object agrees, pixels within ±2 per channel, the largest channel
-//! error where the object agrees (and anywhere), PSNR, and the largest |Δt| (absolute, and
-//! relative to t) where both renderers hit the same object.
+//! Columns: pixels whose object agrees; pixels within ±2 per channel; of the pixels whose
+//! object agrees, those within ±4; the largest channel error where the object agrees (and
+//! anywhere); PSNR; and the largest |Δt| (absolute, and relative to t) where both renderers
+//! hit the same object. The difference image shows the classic scene at 160 × 128, black
+//! where the renderers agree exactly and brighter where they differ (|Δ| × 32 per channel).
 
-use fixray::reference::{Accuracy, DCamera, DScene};
-use fixray::{Camera, Error, demo};
+use fixray::reference::{Accuracy, DCamera, DScene, DVec3};
+use fixray::{Camera, Error, Scene, demo};
 
-fn main() -> Result<(), Error> {
+fn main() -> Result<(), Box<dyn std::error::Error>> {
+    let diff = std::env::args().skip_while(|a| a != "--diff").nth(1);
     println!(
-        "{:<22} {:>9} {:>8} {:>8} {:>10} {:>9} {:>9} {:>10}",
-        "scene", "size", "object%", "±2 %", "max err", "PSNR dB", "max |Δt|", "max Δt/t"
+        "{:<20} {:>8} {:>8} {:>7} {:>8} {:>9} {:>8} {:>9} {:>9}",
+        "scene", "size", "object%", "±2 %", "±4 ag.%", "max err", "PSNR dB", "max |Δt|", "Δt/t"
     );
-    let scene = demo::scene();
-    let Some(dscene) = DScene::from_scene(&scene) else {
-        return Err(Error::DegenerateCamera {
-            why: "demo scene did not convert",
-        });
-    };
+    let demo_scene = demo::scene();
     for (cols, rows) in [(160u16, 128u16), (320, 240), (80, 64), (128, 64)] {
         let camera = demo::camera(cols, rows)?;
-        let dcamera = demo_dcamera(cols, rows);
-        row(
-            "demo (pinhole)",
-            cols,
+        let h = demo::SCREEN_HEIGHT as f64;
+        let dcamera = DCamera::pinhole(
+            h * cols as f64 / rows as f64,
+            h,
+            demo::SCREEN_DISTANCE as f64,
             rows,
-            &Accuracy::measure(&scene, &camera, &dscene, &dcamera),
-        );
+            cols,
+        )
+        .ok_or("demo camera")?;
+        row("demo (pinhole)", &demo_scene, &camera, &dcamera, None)?;
     }
+    let classic = demo::classic();
     for (cols, rows) in [(160u16, 128u16), (320, 240)] {
-        let (eye, target, up) = ([0.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]);
-        let camera = Camera::look_at(eye, target, up, 60.0, cols, rows)?;
-        let d = |v: [f32; 3]| fixray::reference::DVec3::new(v[0] as f64, v[1] as f64, v[2] as f64);
-        let dcamera =
-            DCamera::look_at(d(eye), d(target), d(up), 60.0, cols, rows).expect("a valid camera");
-        row(
-            "demo (look-at 60°)",
+        let camera = demo::classic_camera(cols, rows)?;
+        let dcamera = DCamera::look_at(
+            DVec3::ZERO,
+            -DVec3::Z,
+            DVec3::Y,
+            demo::CLASSIC_FOV_DEGREES as f64,
             cols,
             rows,
-            &Accuracy::measure(&scene, &camera, &dscene, &dcamera),
-        );
+        )
+        .ok_or("classic camera")?;
+        let path = diff.as_deref().filter(|_| cols == 160);
+        row("classic (look-at)", &classic, &camera, &dcamera, path)?;
     }
     Ok(())
 }
 
-/// The reference twin of [`demo::camera`], built from the same numbers.
-fn demo_dcamera(cols: u16, rows: u16) -> DCamera {
-    let h = demo::SCREEN_HEIGHT as f64;
-    let w = h * cols as f64 / rows as f64;
-    DCamera::pinhole(w, h, demo::SCREEN_DISTANCE as f64, rows, cols).expect("a valid camera")
-}
-
-fn row(name: &str, cols: u16, rows: u16, a: &Accuracy) {
+fn row(
+    name: &str,
+    scene: &Scene<8>,
+    camera: &Camera,
+    dcamera: &DCamera,
+    diff: Option<&str>,
+) -> Result<(), Box<dyn std::error::Error>> {
+    let dscene = DScene::from_scene(scene).ok_or(Error::DegenerateCamera {
+        why: "the scene has no f64 twin",
+    })?;
+    let (cols, rows) = (camera.cols(), camera.rows());
+    let mut image = Vec::with_capacity(cols as usize * rows as usize * 3);
+    let a = Accuracy::measure_each(scene, camera, &dscene, dcamera, |_, _, seen, reference| {
+        for (s, r) in [
+            (seen.r, reference.r),
+            (seen.g, reference.g),
+            (seen.b, reference.b),
+        ] {
+            image.push(s.abs_diff(r).saturating_mul(32));
+        }
+    });
     println!(
-        "{:<22} {:>9} {:>8.3} {:>8.3} {:>5} ({:>3}) {:>9.1} {:>9.5} {:>10.2e}",
+        "{:<20} {:>8} {:>8.3} {:>7.3} {:>8.3} {:>4} ({:>3}) {:>8.1} {:>9.4} {:>9.2e}",
         name,
         format!("{cols}x{rows}"),
         a.same_object_percent(),
         a.within_2_percent(),
+        a.same_within_4_percent(),
         a.max_channel_error,
         a.max_channel_error_any,
         a.psnr_db(),
         a.max_dt,
         a.max_dt_relative
     );
+    if let Some(path) = diff {
+        let mut ppm = format!("P6\n{cols} {rows}\n255\n").into_bytes();
+        ppm.extend(image);
+        if let Some(dir) = std::path::Path::new(path).parent() {
+            std::fs::create_dir_all(dir)?;
+        }
+        std::fs::write(path, ppm)?;
+        println!("  difference image of {name} {cols}x{rows} written to {path}");
+    }
+    Ok(())
 }

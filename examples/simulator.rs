@@ -1,10 +1,11 @@
-//! The demo scene drawn on an `embedded-graphics-simulator` display, streamed row by row
+//! A scene (the demo, or the classic one) drawn on an `embedded-graphics-simulator` display, streamed row by row
 //! exactly as on a microcontroller, then saved as a PNG or shown in a window.
 //!
 //! ```text
 //! cargo run --release --example simulator                     # writes out/simulator.png
 //! cargo run --release --example simulator -- --png docs/demo.png --size 160x128 --color rgb888
 //! cargo run --release --example simulator -- --size 128x64 --color binary   # a one-bit OLED
+//! cargo run --release --example simulator -- --scene classic --png docs/classic.png
 //! cargo run --release --features window --example simulator   # a window (needs libsdl2-dev)
 //! ```
 //!
@@ -19,11 +20,13 @@ use std::time::{Duration, Instant};
 use embedded_graphics::pixelcolor::{BinaryColor, Gray8, Rgb565, Rgb888};
 use embedded_graphics::prelude::{Dimensions, PixelColor, Size};
 use embedded_graphics_simulator::{OutputSettings, SimulatorDisplay};
-use fixray::{Camera, DrawError, FromRgb, MAX_PIXELS, Rgb, Viewport, demo};
+use fixray::{Camera, DrawError, FromRgb, MAX_PIXELS, Rgb, Scene, Viewport, demo};
 
 const USAGE: &str = "\
-usage: simulator [--png FILE] [--size WxH] [--color rgb565|rgb888|gray8|binary]
+usage: simulator [--scene demo|classic] [--png FILE] [--size WxH] [--color rgb565|rgb888|gray8|binary]
 
+  --scene S     demo (default): matte spheres, one light; classic: tinyraytracer's scene with
+                three lights, highlights, shadows, mirrors and a checkerboard floor
   --png FILE    write the picture to FILE (default: out/simulator.png in the crate)
   --size WxH    display size in pixels, 1 to 4096 a side (default: 160x128)
   --color C     the display's colour format (default: rgb888); gray8 and binary are dithered
@@ -52,9 +55,41 @@ impl Format {
     }
 }
 
+/// Which scene to draw.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Which {
+    Demo,
+    Classic,
+}
+
+impl Which {
+    fn name(self) -> &'static str {
+        match self {
+            Which::Demo => "demo",
+            Which::Classic => "classic",
+        }
+    }
+
+    fn scene(self) -> Scene<8> {
+        match self {
+            Which::Demo => demo::scene(),
+            Which::Classic => demo::classic(),
+        }
+    }
+
+    /// The scene's own camera, looking from the origin down −z.
+    fn camera(self, cols: u16, rows: u16) -> Result<Camera, fixray::Error> {
+        match self {
+            Which::Demo => demo::camera(cols, rows),
+            Which::Classic => demo::classic_camera(cols, rows),
+        }
+    }
+}
+
 /// What the command line asked for.
 #[derive(Debug, Clone, PartialEq, Eq)]
 struct Options {
+    scene: Which,
     png: Option<PathBuf>,
     cols: u16,
     rows: u16,
@@ -64,6 +99,7 @@ struct Options {
 /// `Ok(None)` means `--help`.
 fn parse(args: impl IntoIterator<Item = String>) -> Result<Option<Options>, String> {
     let mut options = Options {
+        scene: Which::Demo,
         png: None,
         cols: 160,
         rows: 128,
@@ -86,6 +122,13 @@ fn parse(args: impl IntoIterator<Item = String>) -> Result<Option<Options>, Stri
         match flag.as_str() {
             "-h" | "--help" => return Ok(None),
             "--png" => options.png = Some(PathBuf::from(value()?)),
+            "--scene" => {
+                options.scene = match value()?.as_str() {
+                    "demo" => Which::Demo,
+                    "classic" => Which::Classic,
+                    other => return Err(format!("unknown scene '{other}': use demo or classic")),
+                }
+            }
             "--size" => (options.cols, options.rows) = parse_size(&value()?)?,
             "--color" | "--colour" => {
                 options.format = match value()?.as_str() {
@@ -119,16 +162,18 @@ fn parse_size(text: &str) -> Result<(u16, u16), String> {
     Ok((side(w).ok_or_else(bad)?, side(h).ok_or_else(bad)?))
 }
 
-/// Renders the demo scene through `camera` onto a new simulator display, one row at a time,
-/// and returns the display with the time the render took.
-fn render<C>(camera: &Camera) -> Result<(SimulatorDisplay<C>, Duration), DrawError<Infallible>>
+/// Renders `scene` through `camera` onto a new simulator display, one row at a time, and
+/// returns the display with the time the render took.
+fn render<C>(
+    scene: &Scene<8>,
+    camera: &Camera,
+) -> Result<(SimulatorDisplay<C>, Duration), DrawError<Infallible>>
 where
     C: FromRgb + From<BinaryColor>,
 {
-    let scene = demo::scene();
     let mut display =
         SimulatorDisplay::<C>::new(Size::new(camera.cols().into(), camera.rows().into()));
-    let view = Viewport::new(&scene, camera, display.bounding_box())?;
+    let view = Viewport::new(scene, camera, display.bounding_box())?;
     // One row of RAM, as on a microcontroller: 3 bytes a column.
     let mut row = [Rgb::BLACK; MAX_PIXELS as usize];
     let start = Instant::now();
@@ -142,7 +187,11 @@ struct Picture {
     took: Duration,
 }
 
-fn picture(camera: &Camera, format: Format) -> Result<Picture, DrawError<Infallible>> {
+fn picture(
+    scene: &Scene<8>,
+    camera: &Camera,
+    format: Format,
+) -> Result<Picture, DrawError<Infallible>> {
     fn output<C: PixelColor + Into<Rgb888>>(
         (display, took): (SimulatorDisplay<C>, Duration),
     ) -> Picture {
@@ -152,16 +201,20 @@ fn picture(camera: &Camera, format: Format) -> Result<Picture, DrawError<Infalli
         }
     }
     Ok(match format {
-        Format::Rgb565 => output(render::<Rgb565>(camera)?),
-        Format::Rgb888 => output(render::<Rgb888>(camera)?),
-        Format::Gray8 => output(render::<Gray8>(camera)?),
-        Format::Binary => output(render::<BinaryColor>(camera)?),
+        Format::Rgb565 => output(render::<Rgb565>(scene, camera)?),
+        Format::Rgb888 => output(render::<Rgb888>(scene, camera)?),
+        Format::Gray8 => output(render::<Gray8>(scene, camera)?),
+        Format::Binary => output(render::<BinaryColor>(scene, camera)?),
     })
 }
 
 fn write_png(options: &Options, path: &Path) -> Result<(), String> {
-    let camera = demo::camera(options.cols, options.rows).map_err(|e| e.to_string())?;
-    let picture = picture(&camera, options.format).map_err(|e| e.to_string())?;
+    let camera = options
+        .scene
+        .camera(options.cols, options.rows)
+        .map_err(|e| e.to_string())?;
+    let picture =
+        picture(&options.scene.scene(), &camera, options.format).map_err(|e| e.to_string())?;
     if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
         std::fs::create_dir_all(dir)
             .map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
@@ -172,7 +225,8 @@ fn write_png(options: &Options, path: &Path) -> Result<(), String> {
         .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
     let shown = std::path::absolute(path).unwrap_or_else(|_| path.to_path_buf());
     println!(
-        "wrote the demo scene, {}x{} {}, rendered in {:.1} ms, to {}",
+        "wrote the {} scene, {}x{} {}, rendered in {:.1} ms, to {}",
+        options.scene.name(),
         options.cols,
         options.rows,
         options.format.name(),
@@ -243,14 +297,16 @@ mod window {
 
     impl Orbit {
         fn camera(&self, cols: u16, rows: u16) -> Result<Camera, String> {
-            let (az, el) = (self.azimuth.to_radians(), self.elevation.to_radians());
-            let eye = [
-                TARGET[0] + DISTANCE * az.sin() * el.cos(),
-                TARGET[1] + DISTANCE * el.sin(),
-                TARGET[2] + DISTANCE * az.cos() * el.cos(),
-            ];
-            Camera::look_at(eye, TARGET, [0.0, 1.0, 0.0], self.fov, cols, rows)
-                .map_err(|e| e.to_string())
+            Camera::orbit(
+                TARGET,
+                DISTANCE,
+                self.azimuth,
+                self.elevation,
+                self.fov,
+                cols,
+                rows,
+            )
+            .map_err(|e| e.to_string())
         }
 
         /// Applies a key; `true` if the view changed.
@@ -289,6 +345,7 @@ mod window {
             .create_texture_streaming(PixelFormatEnum::RGB24, cols, rows)
             .map_err(|e| e.to_string())?;
         let mut events = sdl.event_pump()?;
+        let scene = options.scene.scene();
         let mut orbit = Orbit {
             azimuth: 0.0,
             elevation: 0.0,
@@ -298,7 +355,7 @@ mod window {
         loop {
             if changed {
                 let camera = orbit.camera(options.cols, options.rows)?;
-                let frame = picture(&camera, options.format).map_err(|e| e.to_string())?;
+                let frame = picture(&scene, &camera, options.format).map_err(|e| e.to_string())?;
                 texture
                     .update(
                         None,

@@ -252,15 +252,25 @@ impl Camera {
 
     /// From the eye towards the centre of pixel (`row`, `col`), in pixel units, unnormalised.
     fn towards(&self, row: u16, col: u16) -> Vec3 {
-        // Offsets from the screen centre, in half pixels: 2·(col + ½) − cols.
-        let kx = 2 * col as i64 + 1 - self.cols as i64;
-        let ky = 2 * row as i64 + 1 - self.rows as i64;
+        self.towards_sample(row, col, 0, 0, 1)
+    }
+
+    /// From the eye towards sample (`sx`, `sy`) of an `n × n` grid of sub-pixel centres in
+    /// pixel (`row`, `col`), in pixel units, unnormalised. `n = 1` is the pixel centre.
+    fn towards_sample(&self, row: u16, col: u16, sx: u8, sy: u8, n: u8) -> Vec3 {
+        // Offsets from the screen centre in units of 1/(2n) pixel:
+        // 2n·(col + (2·sx + 1)/(2n)) − n·cols.
+        let n = n.max(1) as i64;
+        let denom = 2 * n;
+        let kx = denom * col as i64 + 2 * sx as i64 + 1 - n * self.cols as i64;
+        let ky = denom * row as i64 + 2 * sy as i64 + 1 - n * self.rows as i64;
         let c = |f: Fx, r: Fx, d: Fx| {
             let wide =
-                ((f.to_bits() as i64) << 1) + r.to_bits() as i64 * kx + d.to_bits() as i64 * ky;
-            // Halve, rounding half up. The limits (view distance ≤ 8192 pixels, ≤ 4096 pixels a
-            // side, pixel aspect within 1/4..4) keep each component below 18 432 pixels.
-            Fx::from_bits(((wide + 1) >> 1) as i32)
+                f.to_bits() as i64 * denom + r.to_bits() as i64 * kx + d.to_bits() as i64 * ky;
+            // Divide by 2n, rounding half up. The limits (view distance ≤ 8192 pixels, ≤ 4096
+            // pixels a side, pixel aspect within 1/4..4) keep each component below 18 432
+            // pixels, and n ≤ 16 keeps `wide` below 2⁵⁰.
+            Fx::from_bits((wide + n).div_euclid(denom) as i32)
         };
         Vec3::new(
             c(self.forward.x, self.right.x, self.down.x),
@@ -284,6 +294,18 @@ impl Camera {
     pub fn ray(&self, row: u16, col: u16) -> Ray {
         // The screen is at least half a pixel in front of the eye, so p is never zero.
         let dir = self.towards(row, col).normalize_or_zero();
+        Ray::new_unchecked(self.eye, dir)
+    }
+
+    /// The ray through sample (`sx`, `sy`) of an `n × n` grid of sub-pixel centres in pixel
+    /// (`row`, `col`), for supersampling: sample `(s, t)` sits at
+    /// `(col + (2s + 1)/(2n), row + (2t + 1)/(2n))`. `n` is clamped to 1..=16; `n = 1` is
+    /// [`Camera::ray`].
+    #[must_use]
+    pub fn sample_ray(&self, row: u16, col: u16, sx: u8, sy: u8, n: u8) -> Ray {
+        let dir = self
+            .towards_sample(row, col, sx, sy, n.clamp(1, 16))
+            .normalize_or_zero();
         Ray::new_unchecked(self.eye, dir)
     }
 }

@@ -1,13 +1,19 @@
-//! The demo scene shared by the examples, the tests and the firmware.
+//! The scenes shared by the examples, the tests and the firmware.
 //!
-//! Four spheres over a ground plane, lit from the upper left behind the viewer, seen by the
-//! chapter's pinhole camera from the origin down −z with a 60° vertical field of view.
+//! - [`scene`]: four matte spheres over a ground plane, lit from the upper left behind the
+//!   viewer, seen by the chapter's pinhole camera ([`camera`]) from the origin down −z with a
+//!   60° vertical field of view.
+//! - [`classic`]: the same four spheres as ivory, glass, red rubber and a mirror, three lights,
+//!   and a checkerboard floor — the geometry of ssloy's tinyraytracer — seen by the look-at
+//!   camera ([`classic_camera`]).
 
+use crate::background::Background;
 use crate::camera::Camera;
 use crate::color::Rgb;
 use crate::error::Error;
 use crate::fx::Fx;
 use crate::light::Light;
+use crate::material::Material;
 use crate::plane::Plane;
 use crate::scene::Scene;
 use crate::sphere::Sphere;
@@ -65,4 +71,82 @@ pub fn camera(cols: u16, rows: u16) -> Result<Camera, Error> {
     }
     let width = SCREEN_HEIGHT * cols as f32 / rows as f32;
     Camera::pinhole(width, SCREEN_HEIGHT, SCREEN_DISTANCE, rows, cols)
+}
+
+/// The classic scene: tinyraytracer's spheres at (−3, 0, −16) r 2 (ivory), (−1, −1.5, −12) r 2
+/// (glass), (1.5, −0.5, −18) r 3 (red rubber) and (7, 5, −18) r 4 (mirror); lights at
+/// (−20, 20, 20), (30, 50, −25) and (30, 20, 30) of intensity 1.5, 1.8 and 1.7; a checkerboard
+/// floor of 2-unit squares at y = −4 for |x| < 10 and −30 < z < −10; a sky gradient.
+///
+/// fixray does not refract, so the glass sphere is a faint mirror with a sharp highlight and
+/// a little diffuse light in place of tinyraytracer's transparency.
+#[must_use]
+pub fn classic() -> Scene<8> {
+    let fx = Fx::from_num::<f32>;
+    let sky = Background {
+        top: Rgb::new(20, 90, 170),
+        bottom: Rgb::new(51, 178, 204),
+    };
+    let lights = [
+        Light::new_unchecked(Vec3::from_ints(-20, 20, 20), fx(1.5)),
+        Light::new_unchecked(Vec3::from_ints(30, 50, -25), fx(1.8)),
+        Light::new_unchecked(Vec3::from_ints(30, 20, 30), fx(1.7)),
+    ];
+    let mut scene = match Scene::new(lights[0], Fx::ZERO, sky) {
+        Ok(s) => s,
+        Err(_) => unreachable!("zero is a valid ambient term"),
+    };
+    // Three lights in a scene of capacity four, five objects in eight: these cannot fail.
+    let _ = scene.add_light(lights[1]);
+    let _ = scene.add_light(lights[2]);
+    let material = |colour, diffuse, specular, shininess, reflect| Material {
+        colour,
+        diffuse: fx(diffuse),
+        specular: fx(specular),
+        shininess,
+        reflect: fx(reflect),
+        checker: None,
+    };
+    let ivory = material(Rgb::new(102, 102, 77), 0.6, 0.3, 50, 0.1);
+    let glass = material(Rgb::new(153, 179, 204), 0.1, 0.5, 125, 0.3);
+    let rubber = material(Rgb::new(77, 26, 26), 0.9, 0.1, 10, 0.0);
+    let mirror = material(Rgb::WHITE, 0.0, 10.0, 1425, 0.8);
+    let floor_material = Material {
+        checker: Some(crate::material::Checker {
+            size: fx(2.0),
+            other: Rgb::new(77, 51, 26),
+        }),
+        ..Material::matte(Rgb::new(77, 77, 77))
+    };
+    let floor = Plane::new_unchecked(Vec3::from_ints(0, -4, 0), Vec3::Y)
+        .bounded([fx(-10.0), fx(-30.0)], [fx(10.0), fx(-10.0)]);
+    if let Ok(floor) = floor {
+        let _ = scene.add_plane(floor, floor_material);
+    }
+    let spheres = [
+        (Vec3::from_ints(-3, 0, -16), 2.0, ivory),
+        (Vec3::new(fx(-1.0), fx(-1.5), fx(-12.0)), 2.0, glass),
+        (Vec3::new(fx(1.5), fx(-0.5), fx(-18.0)), 3.0, rubber),
+        (Vec3::from_ints(7, 5, -18), 4.0, mirror),
+    ];
+    for (centre, radius, m) in spheres {
+        let _ = scene.add_sphere(Sphere::new_unchecked(centre, fx(radius)), m);
+    }
+    scene
+}
+
+/// Vertical field of view of the classic camera, as in tinyraytracer.
+pub const CLASSIC_FOV_DEGREES: f32 = 60.0;
+
+/// The classic camera at `cols × rows`: the look-at camera at the origin, looking down −z,
+/// with a [`CLASSIC_FOV_DEGREES`] vertical field of view.
+pub fn classic_camera(cols: u16, rows: u16) -> Result<Camera, Error> {
+    Camera::look_at(
+        [0.0, 0.0, 0.0],
+        [0.0, 0.0, -1.0],
+        [0.0, 1.0, 0.0],
+        CLASSIC_FOV_DEGREES,
+        cols,
+        rows,
+    )
 }

@@ -50,6 +50,7 @@
 #![forbid(unsafe_code)]
 #![deny(missing_docs, rustdoc::broken_intra_doc_links)]
 
+mod background;
 mod camera;
 mod color;
 pub mod demo;
@@ -61,16 +62,20 @@ mod hash;
 mod hit;
 mod isqrt;
 mod light;
+mod lighting;
+mod material;
 mod plane;
 mod ray;
 mod render;
 mod scene;
+mod shading;
 mod sphere;
 mod vec3;
 
 #[cfg(feature = "reference")]
 pub mod reference;
 
+pub use background::Background;
 pub use camera::{Camera, MAX_PIXELS};
 pub use color::Rgb;
 pub use draw::{DrawError, FromRgb, Viewport};
@@ -81,9 +86,10 @@ pub use hash::FrameHash;
 pub use hit::Hit;
 pub use isqrt::isqrt;
 pub use light::Light;
+pub use material::{Checker, Material};
 pub use plane::Plane;
 pub use ray::Ray;
-pub use render::{render, render_row};
+pub use render::{render, render_row, render_row_supersampled};
 pub use scene::{Object, Scene, Shape};
 pub use sphere::Sphere;
 pub use vec3::Vec3;

@@ -4,20 +4,26 @@ use crate::error::Error;
 use crate::fx::Fx;
 use crate::vec3::Vec3;
 
-/// A point light at `position` with a diffuse `intensity` between 0 and 1.
+/// A point light at `position` with an `intensity` between 0 and 4 (1 lights a white surface
+/// facing it fully; several lights add up).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Light {
     /// Where the light is.
     pub position: Vec3,
-    /// How strongly it lights a surface facing it, 0 to 1.
+    /// How strongly it lights a surface facing it, 0 to 4.
     pub intensity: Fx,
 }
 
 impl Light {
-    /// A light, checked: position within ±[`LIMIT`](crate::LIMIT), intensity within 0..=1.
+    /// A light, checked: position within ±[`LIMIT`](crate::LIMIT), intensity within 0..=4.
     pub fn new(position: Vec3, intensity: Fx) -> Result<Self, Error> {
         let position = position.check_range("light position")?;
-        let intensity = unit_interval(intensity, "light intensity")?;
+        if intensity < Fx::ZERO || intensity > Fx::const_from_int(4) {
+            return Err(Error::OutOfRange {
+                what: "light intensity",
+                range: "0 to 4",
+            });
+        }
         Ok(Light {
             position,
             intensity,

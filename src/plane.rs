@@ -11,6 +11,8 @@ use crate::vec3::Vec3;
 pub struct Plane {
     point: Vec3,
     normal: Vec3,
+    /// `[min, max]` in [`Plane::coords`], for a bounded rectangle.
+    bounds: Option<[[Fx; 2]; 2]>,
 }
 
 impl Plane {
@@ -30,14 +32,76 @@ impl Plane {
         let normal = normal.try_normalize().ok_or(Error::ZeroVector {
             what: "plane normal",
         })?;
-        Ok(Plane { point, normal })
+        Ok(Plane {
+            point,
+            normal,
+            bounds: None,
+        })
+    }
+
+    /// The same plane cut down to the rectangle `min ≤ (u, v) ≤ max` in its own coordinates
+    /// ([`Plane::coords`]); rays that meet the plane outside it miss.
+    ///
+    /// ```
+    /// use fixray::{Fx, Plane, Ray, Vec3};
+    /// let fx = Fx::from_num::<i32>;
+    /// // The classic floor: y = −4 for |x| < 10 and −30 < z < −10.
+    /// let floor = Plane::new(Vec3::from_ints(0, -4, 0), Vec3::Y).unwrap()
+    ///     .bounded([fx(-10), fx(-30)], [fx(10), fx(-10)]).unwrap();
+    /// let down = |z: i16| Ray::new(Vec3::from_ints(0, 0, z), -Vec3::Y).unwrap();
+    /// assert!(floor.intersect(&down(-20)).is_some());
+    /// assert!(floor.intersect(&down(-5)).is_none());
+    /// ```
+    pub fn bounded(self, min: [Fx; 2], max: [Fx; 2]) -> Result<Self, Error> {
+        for c in min.iter().chain(&max) {
+            crate::fx::check_range(*c, "plane bounds")?;
+        }
+        if min[0] >= max[0] || min[1] >= max[1] {
+            return Err(Error::OutOfRange {
+                what: "plane bounds",
+                range: "min below max on both axes",
+            });
+        }
+        Ok(Plane {
+            bounds: Some([min, max]),
+            ..self
+        })
+    }
+
+    /// The two world coordinates that lie across the plane: those left when the axis the
+    /// normal is closest to is dropped — `(x, z)` for a floor, `(x, y)` for a wall facing ±z,
+    /// `(y, z)` for a wall facing ±x. Bounds and checkerboards are measured in them.
+    #[must_use]
+    pub fn coords(&self, x: Vec3) -> [Fx; 2] {
+        let (nx, ny, nz) = (
+            self.normal.x.abs(),
+            self.normal.y.abs(),
+            self.normal.z.abs(),
+        );
+        if ny >= nx && ny >= nz {
+            [x.x, x.z]
+        } else if nz >= nx {
+            [x.x, x.y]
+        } else {
+            [x.y, x.z]
+        }
+    }
+
+    /// The rectangle the plane is cut to, `[min, max]` in [`Plane::coords`], if any.
+    #[must_use]
+    pub const fn bounds(&self) -> Option<[[Fx; 2]; 2]> {
+        self.bounds
     }
 
     /// A plane whose values the caller promises are valid: `point` within ±1024 and `normal`
     /// a unit vector. For `const` scenes.
     #[must_use]
     pub const fn new_unchecked(point: Vec3, normal: Vec3) -> Self {
-        Plane { point, normal }
+        Plane {
+            point,
+            normal,
+            bounds: None,
+        }
     }
 
     /// The point `p0` the plane passes through.
@@ -64,7 +128,8 @@ impl Plane {
     /// A ray parallel to the plane (`n·u_r = 0`), one whose hit lies behind its origin, and one
     /// whose hit lies beyond [`FAR`] all miss. The division happens only once the hit is known
     /// to be in front and within `FAR`, so it cannot divide by zero or overflow. The normal of
-    /// the hit faces the ray: planes are two-sided.
+    /// the hit faces the ray: planes are two-sided. A bounded plane misses outside its
+    /// rectangle.
     ///
     /// ```
     /// use fixray::{Fx, Plane, Ray, Vec3};
@@ -93,10 +158,17 @@ impl Plane {
         // |num| ≤ 2¹³·2³³, so shifting by 16 stays below 2⁶². Rounded to nearest.
         let t = ((num << FRAC) + den_abs / 2) / den_abs;
         let t = Fx::from_bits(t as i32);
+        let point = ray.at(t);
+        if let Some([min, max]) = self.bounds {
+            let [u, v] = self.coords(point);
+            if u < min[0] || u > max[0] || v < min[1] || v > max[1] {
+                return None;
+            }
+        }
         let normal = if den < 0 { self.normal } else { -self.normal };
         Some(Hit {
             t,
-            point: ray.at(t),
+            point,
             normal,
             object: 0,
         })

@@ -18,14 +18,62 @@ use crate::scene::Scene;
 /// let mut row = [Rgb::BLACK; 16];
 /// render_row(&scene, &camera, 7, &mut row).unwrap();
 /// // The bottom row of the demo looks down at the ground plane, not the sky.
-/// assert_ne!(row[0], scene.background());
+/// assert_ne!(row[0], demo::BACKGROUND);
 /// ```
-pub fn render_row<const N: usize>(
-    scene: &Scene<N>,
+pub fn render_row<const N: usize, const L: usize>(
+    scene: &Scene<N, L>,
     camera: &Camera,
     row: u16,
     out: &mut [Rgb],
 ) -> Result<(), Error> {
+    check_row(camera, row, out)?;
+    for (col, pixel) in out.iter_mut().enumerate() {
+        *pixel = scene.trace(&camera.ray(row, col as u16));
+    }
+    Ok(())
+}
+
+/// [`render_row`] with `n × n` supersampling: each pixel is the mean of `n²` rays through
+/// a grid of sub-pixel centres ([`Camera::sample_ray`]), each channel rounded half up.
+/// `n` is clamped to 1..=16; `n = 1` equals [`render_row`]. It costs `n²` times as much, so
+/// it is meant for the desktop and for still frames.
+///
+/// ```
+/// use fixray::{demo, render_row, render_row_supersampled, Rgb};
+/// let (scene, camera) = (demo::scene(), demo::camera(32, 24).unwrap());
+/// let (mut plain, mut smooth) = ([Rgb::BLACK; 32], [Rgb::BLACK; 32]);
+/// render_row(&scene, &camera, 12, &mut plain).unwrap();
+/// render_row_supersampled(&scene, &camera, 12, 1, &mut smooth).unwrap();
+/// assert_eq!(plain, smooth);
+/// ```
+pub fn render_row_supersampled<const N: usize, const L: usize>(
+    scene: &Scene<N, L>,
+    camera: &Camera,
+    row: u16,
+    n: u8,
+    out: &mut [Rgb],
+) -> Result<(), Error> {
+    check_row(camera, row, out)?;
+    let n = n.clamp(1, 16);
+    let count = n as u32 * n as u32;
+    for (col, pixel) in out.iter_mut().enumerate() {
+        let mut sum = [0u32; 3];
+        for sy in 0..n {
+            for sx in 0..n {
+                let c = scene.trace(&camera.sample_ray(row, col as u16, sx, sy, n));
+                sum[0] += c.r as u32;
+                sum[1] += c.g as u32;
+                sum[2] += c.b as u32;
+            }
+        }
+        let mean = |s: u32| ((s + count / 2) / count) as u8;
+        *pixel = Rgb::new(mean(sum[0]), mean(sum[1]), mean(sum[2]));
+    }
+    Ok(())
+}
+
+/// Refuses a row outside the screen or a buffer of the wrong width.
+fn check_row(camera: &Camera, row: u16, out: &[Rgb]) -> Result<(), Error> {
     if out.len() != camera.cols() as usize || row >= camera.rows() {
         return Err(Error::SizeMismatch {
             camera: (camera.cols(), camera.rows()),
@@ -34,10 +82,6 @@ pub fn render_row<const N: usize>(
                 row.saturating_add(1),
             ),
         });
-    }
-    for (col, pixel) in out.iter_mut().enumerate() {
-        let ray = camera.ray(row, col as u16);
-        *pixel = scene.shade(scene.shoot(&ray).as_ref());
     }
     Ok(())
 }
@@ -51,8 +95,8 @@ pub fn render_row<const N: usize>(
 /// // The wrong size is an error, not a panic.
 /// assert!(render(&demo::scene(), &demo::camera(16, 16).unwrap(), &mut frame).is_err());
 /// ```
-pub fn render<const N: usize, const W: usize, const H: usize>(
-    scene: &Scene<N>,
+pub fn render<const N: usize, const L: usize, const W: usize, const H: usize>(
+    scene: &Scene<N, L>,
     camera: &Camera,
     frame: &mut Framebuffer<W, H>,
 ) -> Result<(), Error> {

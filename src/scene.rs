@@ -1,12 +1,14 @@
-//! [`Scene`]: planes and spheres, a light, and the chapter's `shoot` and `shade`.
+//! [`Scene`]: planes and spheres, lights, and the chapter's `shoot` and `shade`.
 
 use heapless::Vec;
 
+use crate::background::Background;
 use crate::color::Rgb;
 use crate::error::Error;
-use crate::fx::{self, Fx};
+use crate::fx::Fx;
 use crate::hit::Hit;
 use crate::light::{Light, unit_interval};
+use crate::material::Material;
 use crate::plane::Plane;
 use crate::ray::Ray;
 use crate::sphere::Sphere;
@@ -14,7 +16,7 @@ use crate::sphere::Sphere;
 /// The geometry of an object.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Shape {
-    /// An infinite plane.
+    /// An infinite plane, or a rectangle of one.
     Plane(Plane),
     /// A sphere.
     Sphere(Sphere),
@@ -31,18 +33,32 @@ impl Shape {
     }
 }
 
-/// A shape and its material colour.
+/// A shape and what it is made of.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Object {
     /// Its geometry.
     pub shape: Shape,
-    /// Its colour under full light.
-    pub colour: Rgb,
+    /// How it shades.
+    pub material: Material,
 }
 
-/// Up to `N` objects, one point light, an ambient term and a background colour.
+impl Object {
+    /// The surface colour at a hit point: the material's, or its checkerboard's on a plane.
+    #[must_use]
+    pub fn colour_at(&self, point: crate::Vec3) -> Rgb {
+        match (self.material.checker, self.shape) {
+            (Some(checker), Shape::Plane(plane)) => {
+                checker.colour_at(self.material.colour, plane.coords(point))
+            }
+            _ => self.material.colour,
+        }
+    }
+}
+
+/// Up to `N` objects and `L` point lights, an ambient term and a background.
 ///
-/// The capacity is in the type and the storage inside the value: no allocator.
+/// The capacities are in the type and the storage inside the value: no allocator. Shadows are
+/// on and mirrors follow up to [`Scene::DEFAULT_DEPTH`] bounces unless set otherwise.
 ///
 /// ```
 /// use fixray::{Fx, Light, Plane, Ray, Rgb, Scene, Sphere, Vec3};
@@ -53,28 +69,42 @@ pub struct Object {
 /// // A third object does not fit.
 /// assert!(scene.add_plane(Plane::new(Vec3::ZERO, Vec3::Z).unwrap(), Rgb::BLACK).is_err());
 ///
-/// let hit = scene.shoot(&Ray::new(Vec3::ZERO, -Vec3::Z).unwrap()).unwrap();
-/// assert_eq!(hit.object, ball);
-/// assert_eq!(scene.shade(None), Rgb::new(50, 180, 205));
+/// let ray = Ray::new(Vec3::ZERO, Vec3::from_ints(0, 0, -1)).unwrap();
+/// assert_eq!(scene.shoot(&ray).unwrap().object, ball);
+/// let up = Ray::new(Vec3::ZERO, Vec3::Y).unwrap();
+/// assert_eq!(scene.trace(&up), Rgb::new(50, 180, 205));
 /// ```
 #[derive(Debug, Clone)]
-pub struct Scene<const N: usize> {
+pub struct Scene<const N: usize, const L: usize = 4> {
     objects: Vec<Object, N>,
-    light: Light,
+    lights: Vec<Light, L>,
     ambient: Fx,
-    background: Rgb,
+    background: Background,
+    shadows: bool,
+    depth: u8,
 }
 
-impl<const N: usize> Scene<N> {
+impl<const N: usize, const L: usize> Scene<N, L> {
+    /// Mirror bounces followed by default.
+    pub const DEFAULT_DEPTH: u8 = 4;
+
     /// An empty scene lit by `light`, with `ambient` (0 to 1) light everywhere and
-    /// `background` where rays miss.
-    pub fn new(light: Light, ambient: Fx, background: Rgb) -> Result<Self, Error> {
-        Ok(Scene {
+    /// `background` where rays escape (an [`Rgb`] or a [`Background`] gradient).
+    pub fn new(
+        light: Light,
+        ambient: Fx,
+        background: impl Into<Background>,
+    ) -> Result<Self, Error> {
+        let mut scene = Scene {
             objects: Vec::new(),
-            light,
+            lights: Vec::new(),
             ambient: unit_interval(ambient, "ambient light")?,
-            background,
-        })
+            background: background.into(),
+            shadows: true,
+            depth: Self::DEFAULT_DEPTH,
+        };
+        scene.add_light(light)?;
+        Ok(scene)
     }
 
     /// Adds an object and returns its index, or an error when the scene is full.
@@ -85,20 +115,47 @@ impl<const N: usize> Scene<N> {
         Ok(self.objects.len() - 1)
     }
 
-    /// Adds a sphere of the given colour.
-    pub fn add_sphere(&mut self, sphere: Sphere, colour: Rgb) -> Result<usize, Error> {
+    /// Adds a sphere of a material (or a plain [`Rgb`], which is matte).
+    pub fn add_sphere(
+        &mut self,
+        sphere: Sphere,
+        material: impl Into<Material>,
+    ) -> Result<usize, Error> {
         self.add(Object {
             shape: Shape::Sphere(sphere),
-            colour,
+            material: material.into(),
         })
     }
 
-    /// Adds a plane of the given colour.
-    pub fn add_plane(&mut self, plane: Plane, colour: Rgb) -> Result<usize, Error> {
+    /// Adds a plane of a material (or a plain [`Rgb`], which is matte).
+    pub fn add_plane(
+        &mut self,
+        plane: Plane,
+        material: impl Into<Material>,
+    ) -> Result<usize, Error> {
         self.add(Object {
             shape: Shape::Plane(plane),
-            colour,
+            material: material.into(),
         })
+    }
+
+    /// Adds another light, or an error when `L` are already there.
+    pub fn add_light(&mut self, light: Light) -> Result<usize, Error> {
+        self.lights
+            .push(light)
+            .map_err(|_| Error::CapacityExceeded { capacity: L })?;
+        Ok(self.lights.len() - 1)
+    }
+
+    /// Turns shadow rays on or off (on by default).
+    pub fn set_shadows(&mut self, on: bool) {
+        self.shadows = on;
+    }
+
+    /// Sets how many mirror bounces are followed, at most 16. The ray leaving the last one sees
+    /// only the background, so at 0 mirrors show the sky but no objects.
+    pub fn set_depth(&mut self, bounces: u8) {
+        self.depth = bounces.min(16);
     }
 
     /// The objects, in the order they were added.
@@ -107,10 +164,10 @@ impl<const N: usize> Scene<N> {
         &self.objects
     }
 
-    /// The point light.
+    /// The lights, in the order they were added.
     #[must_use]
-    pub const fn light(&self) -> Light {
-        self.light
+    pub fn lights(&self) -> &[Light] {
+        &self.lights
     }
 
     /// The ambient term.
@@ -119,18 +176,44 @@ impl<const N: usize> Scene<N> {
         self.ambient
     }
 
-    /// The colour of a ray that hits nothing.
+    /// What escaping rays see.
     #[must_use]
-    pub const fn background(&self) -> Rgb {
+    pub const fn background(&self) -> Background {
         self.background
+    }
+
+    /// Whether shadow rays are cast.
+    #[must_use]
+    pub const fn shadows(&self) -> bool {
+        self.shadows
+    }
+
+    /// How many mirror bounces are followed.
+    #[must_use]
+    pub const fn depth(&self) -> u8 {
+        self.depth
     }
 
     /// Shoots `ray` into the scene and returns the nearest hit; on a tie the object added
     /// first wins.
     #[must_use]
     pub fn shoot(&self, ray: &Ray) -> Option<Hit> {
+        self.shoot_from(ray, None)
+    }
+
+    /// [`Scene::shoot`], ignoring the object the ray leaves from.
+    ///
+    /// Spheres and planes are convex: a ray leaving one towards a light or along a mirror
+    /// direction cannot meet the same surface again, so skipping it replaces the usual small
+    /// offset along the normal. That is exact, where an offset in Q16.16 would have to be
+    /// larger than the hit point's rounding (which grows with distance) and would detach
+    /// shadows from the objects that cast them.
+    pub(crate) fn shoot_from(&self, ray: &Ray, leaving: Option<usize>) -> Option<Hit> {
         let mut nearest: Option<Hit> = None;
         for (index, object) in self.objects.iter().enumerate() {
+            if Some(index) == leaving {
+                continue;
+            }
             if let Some(hit) = object.shape.intersect(ray)
                 && nearest.is_none_or(|best| hit.t < best.t)
             {
@@ -143,94 +226,31 @@ impl<const N: usize> Scene<N> {
         nearest
     }
 
-    /// The colour seen along a ray with this hit: the background for a miss, otherwise the
-    /// object's colour times `ambient + intensity · max(0, n·l)` (Lambert), where `l` is the
-    /// unit vector from the hit point to the light. Channels are rounded and clamped to 255.
+    /// Whether anything but object `leaving` lies on `ray` closer than `√distance_squared`
+    /// (a Q32.32 value): a shadow ray, which stops at the first occluder.
+    pub(crate) fn occluded(&self, ray: &Ray, distance_squared: u64, leaving: usize) -> bool {
+        self.objects.iter().enumerate().any(|(index, object)| {
+            index != leaving
+                && object.shape.intersect(ray).is_some_and(|hit| {
+                    let t = hit.t.to_bits() as u64;
+                    t * t < distance_squared
+                })
+        })
+    }
+
+    /// The colour seen along `ray` when it has this first hit: the background for a miss,
+    /// otherwise the lit surface plus what its mirror shows (see [`Material`]).
     #[must_use]
-    pub fn shade(&self, hit: Option<&Hit>) -> Rgb {
-        let Some((hit, object)) = hit.and_then(|h| Some((h, self.objects.get(h.object)?))) else {
-            return self.background;
-        };
-        let diffuse = (self.light.position - hit.point)
-            .try_normalize()
-            .map_or(Fx::ZERO, |l| hit.normal.dot(l).max(Fx::ZERO));
-        let k = self.ambient + fx::mul(self.light.intensity, diffuse);
-        // k ≤ 2, so k · 255 stays far inside u32.
-        let channel = |c: u8| ((c as u32 * k.to_bits() as u32 + 0x8000) >> 16).min(255) as u8;
-        Rgb::new(
-            channel(object.colour.r),
-            channel(object.colour.g),
-            channel(object.colour.b),
-        )
+    pub fn shade(&self, ray: &Ray, hit: Option<&Hit>) -> Rgb {
+        crate::shading::to_rgb(self.radiance(ray, hit.copied()))
     }
 
     /// `shade(shoot(ray))`: the colour of the pixel this ray passes through.
     #[must_use]
     pub fn trace(&self, ray: &Ray) -> Rgb {
-        self.shade(self.shoot(ray).as_ref())
+        self.shade(ray, self.shoot(ray).as_ref())
     }
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::vec3::Vec3;
-
-    fn lit_from_above() -> Scene<4> {
-        let light = Light::new(Vec3::from_ints(0, 100, 0), Fx::from_num(0.75)).unwrap();
-        Scene::new(light, Fx::from_num(0.25), Rgb::new(1, 2, 3)).unwrap()
-    }
-
-    #[test]
-    fn nearest_object_wins_whatever_the_order() {
-        let mut scene = lit_from_above();
-        let far = Sphere::new(Vec3::from_ints(0, 0, -20), Fx::from_num(2)).unwrap();
-        let near = Sphere::new(Vec3::from_ints(0, 0, -10), Fx::from_num(2)).unwrap();
-        scene.add_sphere(far, Rgb::WHITE).unwrap();
-        let near_index = scene.add_sphere(near, Rgb::WHITE).unwrap();
-        let hit = scene
-            .shoot(&Ray::new(Vec3::ZERO, -Vec3::Z).unwrap())
-            .unwrap();
-        assert_eq!((hit.object, hit.t), (near_index, Fx::from_num(8)));
-    }
-
-    #[test]
-    fn lambert_shading_follows_the_angle_to_the_light() {
-        let mut scene = lit_from_above();
-        let ground = Plane::new(Vec3::from_ints(0, -4, 0), Vec3::Y).unwrap();
-        scene.add_plane(ground, Rgb::new(200, 100, 0)).unwrap();
-        // Straight below the light: n·l = 1, so k = 0.25 + 0.75 = 1.
-        let below = scene.shoot(&Ray::new(Vec3::ZERO, -Vec3::Y).unwrap());
-        assert_eq!(scene.shade(below.as_ref()), Rgb::new(200, 100, 0));
-        // A wall lit from behind gets only the ambient quarter.
-        let behind = Light::new(Vec3::from_ints(0, 0, -100), Fx::from_num(0.75)).unwrap();
-        let mut dark: Scene<1> = Scene::new(behind, Fx::from_num(0.25), Rgb::BLACK).unwrap();
-        let wall = Plane::new(Vec3::from_ints(0, 0, -5), Vec3::Z).unwrap();
-        dark.add_plane(wall, Rgb::new(200, 100, 0)).unwrap();
-        assert_eq!(
-            dark.trace(&Ray::new(Vec3::ZERO, -Vec3::Z).unwrap()),
-            Rgb::new(50, 25, 0)
-        );
-    }
-
-    #[test]
-    fn misses_show_the_background() {
-        let scene = lit_from_above();
-        assert_eq!(
-            scene.trace(&Ray::new(Vec3::ZERO, Vec3::X).unwrap()),
-            Rgb::new(1, 2, 3)
-        );
-    }
-
-    #[test]
-    fn ambient_outside_zero_to_one_is_refused() {
-        let light = Light::new(Vec3::ZERO, Fx::ONE).unwrap();
-        assert!(matches!(
-            Scene::<1>::new(light, Fx::from_num(1.5), Rgb::BLACK),
-            Err(Error::OutOfRange {
-                what: "ambient light",
-                ..
-            })
-        ));
-    }
-}
+mod tests;

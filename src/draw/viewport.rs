@@ -44,18 +44,18 @@ use crate::scene::Scene;
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 #[derive(Debug, Clone, Copy)]
-pub struct Viewport<'a, const N: usize> {
-    scene: &'a Scene<N>,
+pub struct Viewport<'a, const N: usize, const L: usize = 4> {
+    scene: &'a Scene<N, L>,
     camera: &'a Camera,
     area: Rectangle,
 }
 
-impl<'a, const N: usize> Viewport<'a, N> {
+impl<'a, const N: usize, const L: usize> Viewport<'a, N, L> {
     /// Places the camera's picture on `area` of a display.
     ///
     /// `area` must be exactly `camera.cols() × camera.rows()` pixels, and its far corner must
     /// be a representable display point; otherwise this is an error.
-    pub fn new(scene: &'a Scene<N>, camera: &'a Camera, area: Rectangle) -> Result<Self, Error> {
+    pub fn new(scene: &'a Scene<N, L>, camera: &'a Camera, area: Rectangle) -> Result<Self, Error> {
         let (cols, rows) = (camera.cols(), camera.rows());
         if area.size != Size::new(cols.into(), rows.into()) {
             let clamp = |v: u32| v.min(u16::MAX.into()) as u16;

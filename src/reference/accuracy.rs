@@ -17,6 +17,8 @@ pub struct Accuracy {
     pub within_2: u32,
     /// Pixels (of all) whose three channels are each within ±4 of the reference.
     pub within_4: u32,
+    /// Pixels where the object agrees and all three channels are within ±4.
+    pub same_within_4: u32,
     /// The largest channel difference where the object agrees.
     pub max_channel_error: u8,
     /// The largest channel difference anywhere, object mismatches included.
@@ -35,20 +37,34 @@ impl Accuracy {
     /// `camera` and `dcamera` must describe the same screen; the reference scene is the fixed
     /// one converted ([`DScene::from_scene`]).
     #[must_use]
-    pub fn measure<const N: usize>(
-        scene: &Scene<N>,
+    pub fn measure<const N: usize, const L: usize>(
+        scene: &Scene<N, L>,
         camera: &Camera,
-        dscene: &DScene<N>,
+        dscene: &DScene<N, L>,
         dcamera: &DCamera,
+    ) -> Self {
+        Self::measure_each(scene, camera, dscene, dcamera, |_, _, _, _| {})
+    }
+
+    /// [`Accuracy::measure`], also handing each pixel's position and both colours (fixed,
+    /// reference) to `each`: for a difference image.
+    pub fn measure_each<const N: usize, const L: usize>(
+        scene: &Scene<N, L>,
+        camera: &Camera,
+        dscene: &DScene<N, L>,
+        dcamera: &DCamera,
+        mut each: impl FnMut(u16, u16, Rgb, Rgb),
     ) -> Self {
         let mut acc = Accuracy::default();
         for row in 0..camera.rows() {
             for col in 0..camera.cols() {
-                let hit = scene.shoot(&camera.ray(row, col));
-                let seen = scene.shade(hit.as_ref());
+                let ray = camera.ray(row, col);
+                let hit = scene.shoot(&ray);
+                let seen = scene.shade(&ray, hit.as_ref());
                 let (dhit, dseen) = dscene.trace(&dcamera.ray(row, col));
                 let same = hit.map(|h| h.object) == dhit.map(|h| h.object);
                 acc.add(seen, dseen, same);
+                each(row, col, seen, dseen);
                 if let (Some(h), Some(d), true) = (hit, dhit, same) {
                     let dt = (h.t.to_num::<f64>() - d.t).abs();
                     acc.max_dt = acc.max_dt.max(dt);
@@ -72,6 +88,7 @@ impl Accuracy {
         self.same_object += same_object as u32;
         self.within_2 += (worst <= 2) as u32;
         self.within_4 += (worst <= 4) as u32;
+        self.same_within_4 += (same_object && worst <= 4) as u32;
         if same_object {
             self.max_channel_error = self.max_channel_error.max(worst);
         }
@@ -89,6 +106,12 @@ impl Accuracy {
     #[must_use]
     pub fn within_2_percent(&self) -> f64 {
         percent(self.within_2, self.pixels)
+    }
+
+    /// Share of the pixels whose object agrees that are within ±4 per channel, in percent.
+    #[must_use]
+    pub fn same_within_4_percent(&self) -> f64 {
+        percent(self.same_within_4, self.same_object)
     }
 
     /// Share of pixels within ±4 per channel, in percent.

@@ -1,14 +1,16 @@
-//! [`DLight`] and the shading model: one point light plus an ambient term.
+//! [`DLight`]: a point light.
 
-use super::{DHit, DVec3};
-use crate::Rgb;
+use super::DVec3;
 
 /// A point light: where it is, and how strongly it lights a surface facing it squarely.
+///
+/// An intensity of 1 lights a white matte surface facing it to full white; several lights add
+/// up. The fixed renderer accepts 0 to 4.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct DLight {
     /// The light's position.
     pub position: DVec3,
-    /// The weight of the diffuse term in the brightness.
+    /// The light's strength, multiplying both the diffuse and the highlight terms.
     pub intensity: f64,
 }
 
@@ -23,37 +25,14 @@ impl DLight {
         }
     }
 
-    /// The diffuse (Lambert) factor at a hit: `max(0, n · l)`, where `l` is the unit vector
-    /// from the hit point towards the light.
+    /// Seen from `point`: the unit vector `l` towards the light and the distance to it.
     ///
-    /// A surface facing away from the light gets 0, and so does a light sitting exactly on the
-    /// hit point, where `l` has no direction.
+    /// `None` when the light sits exactly on `point`, where `l` has no direction; such a light
+    /// lights nothing there.
     #[must_use]
-    pub fn diffuse(&self, hit: &DHit) -> f64 {
-        if self.position == hit.point {
-            return 0.0;
-        }
-        let l = (self.position - hit.point).normalize_or_zero();
-        libm::fmax(0.0, hit.normal.dot(l))
-    }
-
-    /// The brightness `k = ambient + intensity · diffuse` that scales a surface colour at a hit.
-    #[must_use]
-    pub fn brightness(&self, ambient: f64, hit: &DHit) -> f64 {
-        ambient + self.intensity * self.diffuse(hit)
-    }
-
-    /// The colour `colour` shows at `hit`: each channel `c` becomes `min(255, round(c · k))`
-    /// with `k` the [`brightness`](Self::brightness).
-    ///
-    /// `k` is non-negative for a sensible scene, so `round` (half away from zero) rounds half
-    /// up; a negative product would become 0.
-    #[must_use]
-    pub fn shade(&self, ambient: f64, colour: Rgb, hit: &DHit) -> Rgb {
-        let k = self.brightness(ambient, hit);
-        // `as u8` saturates, so a negative (or NaN) product becomes 0.
-        let channel = |c: u8| libm::fmin(255.0, libm::round(f64::from(c) * k)) as u8;
-        Rgb::new(channel(colour.r), channel(colour.g), channel(colour.b))
+    pub fn seen_from(&self, point: DVec3) -> Option<(DVec3, f64)> {
+        let to_light = self.position - point;
+        Some((to_light.try_normalize()?, to_light.length()))
     }
 }
 
@@ -61,48 +40,20 @@ impl DLight {
 mod tests {
     use super::*;
 
-    /// A hit at the origin on a surface facing +y.
-    fn floor_hit() -> DHit {
-        DHit {
-            t: 1.0,
-            point: DVec3::ZERO,
-            normal: DVec3::Y,
-            object: 0,
-        }
-    }
-
     #[test]
-    fn diffuse_is_the_cosine_of_the_light_angle() {
-        let overhead = DLight::new(DVec3::new(0.0, 10.0, 0.0), 1.0);
-        assert_eq!(overhead.diffuse(&floor_hit()), 1.0);
-        let slanted = DLight::new(DVec3::new(3.0, 4.0, 0.0), 1.0);
-        assert!((slanted.diffuse(&floor_hit()) - 0.8).abs() < 1e-15);
-        let below = DLight::new(DVec3::new(0.0, -10.0, 0.0), 1.0);
-        assert_eq!(below.diffuse(&floor_hit()), 0.0);
-        let on_the_point = DLight::new(DVec3::ZERO, 1.0);
-        assert_eq!(on_the_point.diffuse(&floor_hit()), 0.0);
-    }
-
-    #[test]
-    fn shading_scales_rounds_and_clamps_each_channel() {
-        let light = DLight::new(DVec3::new(0.0, 10.0, 0.0), 0.5);
-        // k = 0.25 + 0.5 · 1 = 0.75: 200 → 150, 3 → 2.25 → 2, 2 → 1.5 → 2 (half up).
-        let lit = light.shade(0.25, Rgb::new(200, 3, 2), &floor_hit());
-        assert_eq!(lit, Rgb::new(150, 2, 2));
-        // k = 1.5: 200 → 300, clamped to 255.
-        let bright = DLight::new(DVec3::new(0.0, 10.0, 0.0), 1.0);
+    fn the_direction_is_unit_and_the_distance_euclidean() {
+        let light = DLight::new(DVec3::new(3.0, 4.0, 0.0), 1.0);
         assert_eq!(
-            bright.shade(0.5, Rgb::new(200, 100, 0), &floor_hit()),
-            Rgb::new(255, 150, 0)
+            light.seen_from(DVec3::ZERO),
+            Some((DVec3::new(0.6, 0.8, 0.0), 5.0))
         );
+        let (l, distance) = light.seen_from(DVec3::new(3.0, 4.0, 12.0)).unwrap();
+        assert_eq!((l, distance), (-DVec3::Z, 12.0));
     }
 
     #[test]
-    fn a_surface_facing_away_gets_only_ambient() {
-        let below = DLight::new(DVec3::new(0.0, -10.0, 0.0), 1.0);
-        assert_eq!(
-            below.shade(0.1, Rgb::new(100, 50, 255), &floor_hit()),
-            Rgb::new(10, 5, 26)
-        );
+    fn a_light_on_the_point_has_no_direction() {
+        let light = DLight::new(DVec3::new(1.0, 2.0, 3.0), 1.0);
+        assert_eq!(light.seen_from(DVec3::new(1.0, 2.0, 3.0)), None);
     }
 }

@@ -1,35 +1,67 @@
-//! [`DScene`]: the objects, the light, and the chapter's `shoot` and `shade`.
+//! [`DScene`]: the objects, the lights, and the chapter's `shoot`.
 
 use super::{DHit, DLight, DObject, DRay};
-use crate::Rgb;
+use crate::{Background, Rgb};
 
-/// A scene of up to `N` objects lit by one point light, in fixed storage.
+/// A scene of up to `N` objects and `L` point lights, with an ambient term, a background,
+/// shadows on or off and a limit on mirror bounces, all in fixed storage.
 ///
-/// Usually built from the fixed renderer's scene with
-/// [`DScene::from_scene`](DScene::from_scene), so that both models draw the same thing.
+/// Usually built from the fixed renderer's scene with [`DScene::from_scene`], so that both
+/// models draw the same thing. Shading is in [`DScene::radiance`].
 #[derive(Debug, Clone)]
-pub struct DScene<const N: usize> {
+pub struct DScene<const N: usize, const L: usize = 4> {
     objects: heapless::Vec<DObject, N>,
-    light: DLight,
+    lights: heapless::Vec<DLight, L>,
     ambient: f64,
-    background: Rgb,
+    background: Background,
+    shadows: bool,
+    depth: u8,
 }
 
-impl<const N: usize> DScene<N> {
-    /// An empty scene: nothing in it, so every ray shows `background`.
+impl<const N: usize, const L: usize> DScene<N, L> {
+    /// Mirror bounces followed by a new scene, as in the fixed renderer.
+    pub const DEFAULT_DEPTH: u8 = 4;
+
+    /// An empty, unlit scene: every ray shows `background`, and objects added get only
+    /// `ambient` until lights are added. Shadows are on and mirrors follow up to
+    /// [`DEFAULT_DEPTH`](Self::DEFAULT_DEPTH) bounces.
     #[must_use]
-    pub const fn new(light: DLight, ambient: f64, background: Rgb) -> Self {
+    pub const fn new(ambient: f64, background: Background) -> Self {
         DScene {
             objects: heapless::Vec::new(),
-            light,
+            lights: heapless::Vec::new(),
             ambient,
             background,
+            shadows: true,
+            depth: Self::DEFAULT_DEPTH,
         }
     }
 
     /// Adds an object after those already in the scene; a full scene hands it back.
+    #[expect(
+        clippy::result_large_err,
+        reason = "like heapless::Vec::push, a full scene returns the object itself"
+    )]
     pub fn push(&mut self, object: DObject) -> Result<(), DObject> {
         self.objects.push(object)
+    }
+
+    /// Adds a light; a scene already holding `L` hands it back.
+    pub fn push_light(&mut self, light: DLight) -> Result<(), DLight> {
+        self.lights.push(light)
+    }
+
+    /// Turns shadow rays on or off.
+    pub fn set_shadows(&mut self, on: bool) {
+        self.shadows = on;
+    }
+
+    /// Sets how many mirror bounces are followed (see [`DScene::radiance`]).
+    ///
+    /// Unlike the fixed renderer, which caps this at 16 to bound its running time, any `u8`
+    /// is kept.
+    pub fn set_depth(&mut self, bounces: u8) {
+        self.depth = bounces;
     }
 
     /// The objects, in the order they were added; a hit's `object` indexes this slice.
@@ -39,25 +71,39 @@ impl<const N: usize> DScene<N> {
         &self.objects
     }
 
-    /// The point light.
+    /// The lights, in the order they were added.
     #[inline]
     #[must_use]
-    pub const fn light(&self) -> DLight {
-        self.light
+    pub fn lights(&self) -> &[DLight] {
+        &self.lights
     }
 
-    /// The ambient brightness added to every lit surface.
+    /// The ambient brightness every surface gets, lit or not.
     #[inline]
     #[must_use]
     pub const fn ambient(&self) -> f64 {
         self.ambient
     }
 
-    /// The colour of a pixel whose ray hits nothing.
+    /// What rays that hit nothing see.
     #[inline]
     #[must_use]
-    pub const fn background(&self) -> Rgb {
+    pub const fn background(&self) -> Background {
         self.background
+    }
+
+    /// Whether lights are tested for shadows.
+    #[inline]
+    #[must_use]
+    pub const fn shadows(&self) -> bool {
+        self.shadows
+    }
+
+    /// How many mirror bounces are followed.
+    #[inline]
+    #[must_use]
+    pub const fn depth(&self) -> u8 {
+        self.depth
     }
 
     /// Shoots `ray` into the scene and returns the first hit: the one with the smallest `t`.
@@ -66,43 +112,45 @@ impl<const N: usize> DScene<N> {
     /// in [`objects`](Self::objects).
     #[must_use]
     pub fn shoot(&self, ray: &DRay) -> Option<DHit> {
-        let mut nearest: Option<DHit> = None;
-        for (index, object) in self.objects.iter().enumerate() {
-            let Some(hit) = object.shape.intersect(ray) else {
-                continue;
-            };
-            if nearest.is_none_or(|best| hit.t < best.t) {
-                nearest = Some(DHit {
+        self.shoot_past(ray, None)
+    }
+
+    /// [`shoot`](Self::shoot) among every object but `skip`: the object a mirror ray leaves.
+    ///
+    /// Planes and spheres are convex, so a ray leaving one outward cannot meet it again;
+    /// leaving it out replaces nudging the origin off the surface.
+    pub(super) fn shoot_past(&self, ray: &DRay, skip: Option<usize>) -> Option<DHit> {
+        self.objects
+            .iter()
+            .enumerate()
+            .filter(|&(index, _)| Some(index) != skip)
+            .filter_map(|(index, object)| {
+                let hit = object.shape.intersect(ray)?;
+                Some(DHit {
                     object: index,
                     ..hit
-                });
-            }
-        }
-        nearest
+                })
+            })
+            // `min_by` would keep the last of equals; the earlier object must win a tie.
+            .fold(None, |nearest: Option<DHit>, hit| match nearest {
+                Some(best) if best.t <= hit.t => Some(best),
+                _ => Some(hit),
+            })
     }
 
-    /// The colour a pixel shows for the result of [`shoot`](Self::shoot).
-    ///
-    /// A miss shows the background. A hit shows its object's colour scaled by
-    /// `ambient + intensity · max(0, n · l)` (see [`DLight::shade`]). A hit whose `object` is
-    /// not in this scene is treated as a miss.
+    /// The colour of the pixel whose ray is `ray` and whose first hit is `hit` (the result of
+    /// [`shoot`](Self::shoot)): [`radiance`](Self::radiance), clamped and rounded to 8 bits.
     #[must_use]
-    pub fn shade(&self, hit: Option<&DHit>) -> Rgb {
-        let Some(hit) = hit else {
-            return self.background;
-        };
-        match self.objects.get(hit.object) {
-            Some(object) => self.light.shade(self.ambient, object.colour, hit),
-            None => self.background,
-        }
+    pub fn shade(&self, ray: &DRay, hit: Option<&DHit>) -> Rgb {
+        super::dcolour::to_rgb(self.radiance(ray, hit))
     }
 
-    /// [`shoot`](Self::shoot) then [`shade`](Self::shade): the hit, if any, and the pixel's
-    /// colour.
+    /// [`shoot`](Self::shoot) then [`shade`](Self::shade): the first hit, if any, and the
+    /// pixel's colour.
     #[must_use]
     pub fn trace(&self, ray: &DRay) -> (Option<DHit>, Rgb) {
         let hit = self.shoot(ray);
-        let colour = self.shade(hit.as_ref());
+        let colour = self.shade(ray, hit.as_ref());
         (hit, colour)
     }
 }
@@ -118,12 +166,12 @@ mod tests {
 
     fn sphere(z: f64, colour: Rgb) -> DObject {
         let shape = DSphere::new(DVec3::new(0.0, 0.0, z), 1.0).unwrap();
-        DObject::new(shape.into(), colour)
+        DObject::matte(shape.into(), colour)
     }
 
+    /// Ambient 1 and no lights: every surface shows exactly its colour.
     fn scene(objects: &[DObject]) -> DScene<4> {
-        // A light at the eye, so a surface facing the eye gets k = 0.5 + 0.5 · 1 = 1.
-        let mut s = DScene::new(DLight::new(DVec3::ZERO, 0.5), 0.5, SKY);
+        let mut s = DScene::new(1.0, Background::plain(SKY));
         for o in objects {
             s.push(*o).unwrap();
         }
@@ -144,9 +192,10 @@ mod tests {
 
     #[test]
     fn on_a_tie_the_earlier_object_wins() {
-        let s = scene(&[sphere(-5.0, GREEN), sphere(-5.0, RED)]);
+        let s = scene(&[sphere(-5.0, GREEN), sphere(-5.0, RED), sphere(-5.0, SKY)]);
         assert_eq!(s.shoot(&down_z()).map(|h| h.object), Some(0));
         assert_eq!(s.trace(&down_z()).1, GREEN);
+        assert_eq!(s.shoot_past(&down_z(), Some(0)).map(|h| h.object), Some(1));
     }
 
     #[test]
@@ -158,13 +207,38 @@ mod tests {
     }
 
     #[test]
-    fn a_full_scene_hands_the_object_back() {
-        let mut s: DScene<1> = DScene::new(DLight::new(DVec3::ZERO, 1.0), 0.0, SKY);
+    fn a_rectangle_lets_rays_past_its_edges() {
+        // A red square −1 ≤ x, y ≤ 1 at z = −3 in front of a green ball.
+        let square = DPlane::new(DVec3::new(0.0, 0.0, -3.0), DVec3::Z)
+            .unwrap()
+            .bounded([-1.0, -1.0], [1.0, 1.0])
+            .unwrap();
+        let ball = DSphere::new(DVec3::new(2.0, 0.0, -10.0), 1.0).unwrap();
+        let s = scene(&[
+            DObject::matte(square.into(), RED),
+            DObject::matte(ball.into(), GREEN),
+        ]);
+        assert_eq!(s.trace(&down_z()).1, RED);
+        // Towards the ball's centre the ray meets z = −3 at x = 0.6: still the square.
+        let to_ball = DRay::new(DVec3::ZERO, DVec3::new(2.0, 0.0, -10.0)).unwrap();
+        assert_eq!(s.trace(&to_ball).1, RED);
+        // From x = 2 the plane is met at x = 2, outside the square: the ball behind shows.
+        let beside = DRay::new(DVec3::new(2.0, 0.0, 0.0), -DVec3::Z).unwrap();
+        assert_eq!(s.trace(&beside).0.map(|h| (h.object, h.t)), Some((1, 9.0)));
+    }
+
+    #[test]
+    fn full_scenes_hand_the_extra_back() {
+        let mut s: DScene<1, 1> = DScene::new(0.0, SKY.into());
         let floor = DPlane::new(DVec3::new(0.0, -1.0, 0.0), DVec3::Y).unwrap();
-        assert_eq!(s.push(DObject::new(floor.into(), RED)), Ok(()));
-        let extra = DObject::new(floor.into(), GREEN);
+        assert_eq!(s.push(DObject::matte(floor.into(), RED)), Ok(()));
+        let extra = DObject::matte(floor.into(), GREEN);
         assert_eq!(s.push(extra), Err(extra));
         assert_eq!(s.objects().len(), 1);
+        let light = DLight::new(DVec3::ZERO, 1.0);
+        assert_eq!(s.push_light(light), Ok(()));
+        assert_eq!(s.push_light(light), Err(light));
+        assert_eq!(s.lights(), [light]);
     }
 
     #[test]
@@ -172,6 +246,6 @@ mod tests {
         let s = scene(&[sphere(-5.0, RED)]);
         let mut hit = s.shoot(&down_z()).unwrap();
         hit.object = 3;
-        assert_eq!(s.shade(Some(&hit)), SKY);
+        assert_eq!(s.shade(&down_z(), Some(&hit)), SKY);
     }
 }

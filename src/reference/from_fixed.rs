@@ -2,55 +2,92 @@
 //!
 //! Every Q16.16 number is exactly an `f64`, so the reference starts from precisely the values
 //! the fixed renderer holds. The one change is that plane normals are normalised again in
-//! `f64` (see [`DPlane::new`]); the fixed normal is unit only to within a few 2⁻¹⁶.
+//! `f64` (see [`DPlane::new`]); the fixed normal is unit only to within a few 2⁻¹⁶. Scaling
+//! all three components by one positive number keeps their order, so a plane's `(u, v)` axes
+//! ([`DPlane::coords`]) are the ones the fixed plane chose.
 
-use super::{DLight, DObject, DPlane, DScene, DShape, DSphere, DVec3};
+use super::{DChecker, DLight, DMaterial, DObject, DPlane, DScene, DShape, DSphere, DVec3};
+use crate::Fx;
+
+fn f(x: Fx) -> f64 {
+    x.to_num::<f64>()
+}
 
 impl From<crate::Light> for DLight {
     fn from(light: crate::Light) -> DLight {
-        DLight::new(light.position.into(), light.intensity.to_num::<f64>())
+        DLight::new(light.position.into(), f(light.intensity))
+    }
+}
+
+impl From<crate::Checker> for DChecker {
+    fn from(checker: crate::Checker) -> DChecker {
+        DChecker {
+            size: f(checker.size),
+            other: checker.other,
+        }
+    }
+}
+
+impl From<crate::Material> for DMaterial {
+    fn from(m: crate::Material) -> DMaterial {
+        DMaterial {
+            colour: m.colour,
+            diffuse: f(m.diffuse),
+            specular: f(m.specular),
+            shininess: m.shininess,
+            reflect: f(m.reflect),
+            checker: m.checker.map(DChecker::from),
+        }
     }
 }
 
 impl DShape {
     /// The reference twin of a fixed shape, or `None` if it is degenerate in `f64` (a zero
-    /// normal or a non-positive radius, which the fixed constructors already refuse).
+    /// normal, empty bounds or a non-positive radius, which the fixed constructors refuse).
     #[must_use]
     pub fn from_shape(shape: &crate::Shape) -> Option<DShape> {
         Some(match shape {
             crate::Shape::Plane(p) => {
-                DShape::Plane(DPlane::new(p.point().into(), p.normal().into())?)
+                let plane = DPlane::new(p.point().into(), p.normal().into())?;
+                DShape::Plane(match p.bounds() {
+                    Some([min, max]) => plane.bounded(min.map(f), max.map(f))?,
+                    None => plane,
+                })
             }
             crate::Shape::Sphere(s) => {
                 let centre = DVec3::from(s.centre());
-                DShape::Sphere(DSphere::new(centre, s.radius().to_num::<f64>())?)
+                DShape::Sphere(DSphere::new(centre, f(s.radius()))?)
             }
         })
     }
 }
 
 impl DObject {
-    /// The reference twin of a fixed object: the same shape and colour.
+    /// The reference twin of a fixed object: the same shape and material.
     #[must_use]
     pub fn from_object(object: &crate::Object) -> Option<DObject> {
         Some(DObject::new(
             DShape::from_shape(&object.shape)?,
-            object.colour,
+            object.material.into(),
         ))
     }
 }
 
-impl<const N: usize> DScene<N> {
+impl<const N: usize, const L: usize> DScene<N, L> {
     /// The reference twin of a fixed scene: the same objects in the same order (so hit
-    /// indices agree), the same light, ambient and background.
+    /// indices agree), the same lights, ambient, background, shadow switch and mirror depth.
     ///
     /// `None` if an object is degenerate in `f64`, which a validated fixed scene never has.
     #[must_use]
-    pub fn from_scene(scene: &crate::Scene<N>) -> Option<DScene<N>> {
-        let ambient = scene.ambient().to_num::<f64>();
-        let mut out = DScene::new(scene.light().into(), ambient, scene.background());
+    pub fn from_scene(scene: &crate::Scene<N, L>) -> Option<DScene<N, L>> {
+        let mut out = DScene::new(f(scene.ambient()), scene.background());
+        out.set_shadows(scene.shadows());
+        out.set_depth(scene.depth());
+        // The capacities are the fixed scene's, so neither kind of push can fail.
+        for light in scene.lights() {
+            out.push_light((*light).into()).ok()?;
+        }
         for object in scene.objects() {
-            // The fixed scene holds at most N objects, so this push cannot fail.
             out.push(DObject::from_object(object)?).ok()?;
         }
         Some(out)
@@ -60,42 +97,83 @@ impl<const N: usize> DScene<N> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::{Fx, Light, Object, Plane, Rgb, Scene, Shape, Sphere, Vec3};
+    use crate::{Background, Light, Material, Object, Plane, Rgb, Scene, Shape, Sphere, Vec3};
 
     #[test]
-    fn the_twin_has_the_same_objects_light_and_background() {
+    fn the_twin_has_the_same_objects_lights_and_settings() {
         let fx = Fx::from_num::<f64>;
         let light = Light::new_unchecked(Vec3::from_ints(-20, 20, 20), fx(0.8));
-        let mut scene: Scene<3> = Scene::new(light, fx(0.2), Rgb::new(1, 2, 3)).unwrap();
+        let sky = Background {
+            top: Rgb::new(1, 2, 3),
+            bottom: Rgb::new(4, 5, 6),
+        };
+        let mut scene: Scene<3, 2> = Scene::new(light, fx(0.2), sky).unwrap();
+        scene
+            .add_light(Light::new_unchecked(Vec3::from_ints(5, 5, 5), fx(3.5)))
+            .unwrap();
+        scene.set_shadows(false);
+        scene.set_depth(7);
         let ball = Sphere::new_unchecked(Vec3::new(fx(1.5), fx(-0.5), fx(-18.0)), fx(3.0));
-        let ground = Plane::new_unchecked(Vec3::from_ints(0, -4, 0), Vec3::Y);
+        let shiny = Material::new(Rgb::WHITE, fx(0.6), fx(0.3), 50, fx(0.1)).unwrap();
         scene
             .add(Object {
                 shape: Shape::Sphere(ball),
-                colour: Rgb::WHITE,
+                material: shiny,
             })
             .unwrap();
-        scene
-            .add(Object {
-                shape: Shape::Plane(ground),
-                colour: Rgb::BLACK,
-            })
+        let ground = Plane::new_unchecked(Vec3::from_ints(0, -4, 0), Vec3::Y)
+            .bounded([fx(-10.0), fx(-30.0)], [fx(10.0), fx(-10.25)])
             .unwrap();
+        let board = Material::matte(Rgb::BLACK)
+            .with_checker(fx(1.5), Rgb::new(7, 8, 9))
+            .unwrap();
+        scene.add_plane(ground, board).unwrap();
 
         let twin = DScene::from_scene(&scene).unwrap();
         // Q16.16 values convert exactly: 0.8 becomes the Q16.16 number nearest 0.8.
         assert_eq!(
-            twin.light(),
-            DLight::new(DVec3::new(-20.0, 20.0, 20.0), fx(0.8).to_num())
+            twin.lights(),
+            [
+                DLight::new(DVec3::new(-20.0, 20.0, 20.0), fx(0.8).to_num()),
+                DLight::new(DVec3::new(5.0, 5.0, 5.0), 3.5),
+            ]
         );
         assert_eq!(twin.ambient(), fx(0.2).to_num::<f64>());
-        assert_eq!(twin.background(), Rgb::new(1, 2, 3));
+        assert_eq!(twin.background(), sky);
+        assert_eq!((twin.shadows(), twin.depth()), (false, 7));
         let sphere = DSphere::new(DVec3::new(1.5, -0.5, -18.0), 3.0).unwrap();
-        let plane = DPlane::new(DVec3::new(0.0, -4.0, 0.0), DVec3::Y).unwrap();
+        let plane = DPlane::new(DVec3::new(0.0, -4.0, 0.0), DVec3::Y)
+            .unwrap()
+            .bounded([-10.0, -30.0], [10.0, -10.25])
+            .unwrap();
+        let shiny = DMaterial {
+            colour: Rgb::WHITE,
+            diffuse: fx(0.6).to_num(),
+            specular: fx(0.3).to_num(),
+            shininess: 50,
+            reflect: fx(0.1).to_num(),
+            checker: None,
+        };
+        let board = DMaterial {
+            checker: Some(DChecker {
+                size: 1.5,
+                other: Rgb::new(7, 8, 9),
+            }),
+            ..DMaterial::matte(Rgb::BLACK)
+        };
         let expected = [
-            DObject::new(sphere.into(), Rgb::WHITE),
-            DObject::new(plane.into(), Rgb::BLACK),
+            DObject::new(sphere.into(), shiny),
+            DObject::new(plane.into(), board),
         ];
         assert_eq!(twin.objects(), expected);
+    }
+
+    #[test]
+    fn the_demo_scene_converts() {
+        let demo = crate::demo::scene();
+        let twin = DScene::from_scene(&demo).unwrap();
+        assert_eq!(twin.objects().len(), demo.objects().len());
+        assert_eq!(twin.lights().len(), demo.lights().len());
+        assert_eq!(twin.shadows(), demo.shadows());
     }
 }

@@ -1,24 +1,29 @@
 //! An independent `f64` model of the raycaster, for testing the Q16.16 renderer against.
 //!
 //! This module is compiled only with the cargo feature `reference`. It follows the same
-//! chapter (sections 4.1–4.4) as the fixed-point core but shares none of its code: its types
-//! are `f64` twins named with a `D` prefix ([`DVec3`], [`DRay`], [`DPlane`], [`DSphere`],
-//! [`DHit`], [`DCamera`], [`DScene`]), so a mistake in one model shows up as a disagreement
-//! with the other rather than being copied into both.
+//! chapter (sections 4.1–4.4) and the same shading model as the fixed-point core but shares
+//! none of its code: its types are `f64` twins named with a `D` prefix ([`DVec3`], [`DRay`],
+//! [`DPlane`], [`DSphere`], [`DHit`], [`DCamera`], [`DLight`], [`DMaterial`], [`DScene`]), so a
+//! mistake in one model shows up as a disagreement with the other rather than being copied
+//! into both. Plain data it shares with the fixed side: [`Rgb`](crate::Rgb) colours and the
+//! [`Background`](crate::Background) gradient's two ends.
 //!
 //! The pipeline is the chapter's raycasting loop:
 //!
 //! 1. [`DCamera::ray`] builds the ray through the *pixel centre* of a display pixel
 //!    (Equation 4.1: `x(t) = p_r + t·u_r`, `t ≥ 0`);
-//! 2. [`DScene::shoot`] intersects it with every object — planes by Equation 4.2, spheres by
-//!    the two-step `t_close` method — and keeps the nearest [`DHit`];
-//! 3. [`DScene::shade`] turns that hit into a colour with one point light and an ambient term;
+//! 2. [`DScene::shoot`] intersects it with every object — planes (or rectangles of them) by
+//!    Equation 4.2, spheres by the two-step `t_close` method — and keeps the nearest [`DHit`];
+//! 3. [`DScene::radiance`] lights that hit: ambient, diffuse and a white highlight from every
+//!    light that is not in shadow, a checkerboard on planes, and mirror bounces followed in a
+//!    loop, with a gradient background where rays escape; [`DScene::shade`] rounds the sum
+//!    ([`DColour`], 1.0 for 255) to an 8-bit pixel;
 //! 4. [`render_row`] and [`render`] repeat this for every pixel, row 0 at the top.
 //!
-//! Everything is `no_std` and allocation-free; square roots and tangents come from `libm`, so
-//! the model computes the same numbers under `cargo test` on a host as on a microcontroller.
-//! Colours are fixray's own [`Rgb`](crate::Rgb), so pictures from the two models compare
-//! directly.
+//! Everything is `no_std` and allocation-free; square roots, powers, floors and tangents come
+//! from `libm`, so the model computes the same numbers under `cargo test` on a host as on a
+//! microcontroller. Colours are fixray's own [`Rgb`](crate::Rgb), so pictures from the two
+//! models compare directly.
 //!
 //! ```
 //! use fixray::reference::{render, DCamera, DScene};
@@ -46,12 +51,15 @@
 
 mod accuracy;
 mod dcamera;
+mod dcolour;
 mod dhit;
 mod dlight;
+mod dmaterial;
 mod dobject;
 mod dplane;
 mod dray;
 mod dscene;
+mod dshade;
 mod dsphere;
 mod dvec3;
 mod from_fixed;
@@ -59,8 +67,10 @@ mod render;
 
 pub use accuracy::Accuracy;
 pub use dcamera::DCamera;
+pub use dcolour::DColour;
 pub use dhit::DHit;
 pub use dlight::DLight;
+pub use dmaterial::{DChecker, DMaterial};
 pub use dobject::{DObject, DShape};
 pub use dplane::DPlane;
 pub use dray::DRay;

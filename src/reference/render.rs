@@ -6,13 +6,18 @@ use crate::Rgb;
 /// Shades display row `row` (0 is the top) into `out`, one colour per column, left to right.
 ///
 /// For each column this is the chapter's loop body: build the ray through the pixel centre,
-/// `shoot` it into the scene, and `shade` what it hit.
+/// `shoot` it into the scene, and `shade` what it hit ([`DScene::trace`]).
 ///
 /// # Panics
 ///
 /// If `out.len()` is not `camera.cols()`: the reference is test machinery, and a buffer of
 /// the wrong size is a bug in the test.
-pub fn render_row<const N: usize>(scene: &DScene<N>, camera: &DCamera, row: u16, out: &mut [Rgb]) {
+pub fn render_row<const N: usize, const L: usize>(
+    scene: &DScene<N, L>,
+    camera: &DCamera,
+    row: u16,
+    out: &mut [Rgb],
+) {
     assert_eq!(
         out.len(),
         usize::from(camera.cols()),
@@ -29,7 +34,11 @@ pub fn render_row<const N: usize>(scene: &DScene<N>, camera: &DCamera, row: u16,
 /// # Panics
 ///
 /// If `out.len()` is not `camera.rows() · camera.cols()`.
-pub fn render<const N: usize>(scene: &DScene<N>, camera: &DCamera, out: &mut [Rgb]) {
+pub fn render<const N: usize, const L: usize>(
+    scene: &DScene<N, L>,
+    camera: &DCamera,
+    out: &mut [Rgb],
+) {
     let cols = usize::from(camera.cols());
     let pixels = usize::from(camera.rows()) * cols;
     assert_eq!(
@@ -45,7 +54,7 @@ pub fn render<const N: usize>(scene: &DScene<N>, camera: &DCamera, out: &mut [Rg
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::reference::{DLight, DObject, DPlane, DSphere, DVec3};
+    use crate::reference::{DObject, DPlane, DSphere, DVec3};
 
     const SKY: Rgb = Rgb::new(0, 0, 255);
     const BALL: Rgb = Rgb::new(255, 0, 0);
@@ -53,11 +62,11 @@ mod tests {
 
     /// A ball straight ahead above a floor, lit only by an ambient of 1 so colours are exact.
     fn scene() -> DScene<2> {
-        let mut s = DScene::new(DLight::new(DVec3::ZERO, 0.0), 1.0, SKY);
+        let mut s = DScene::new(1.0, SKY.into());
         let ball = DSphere::new(DVec3::new(0.0, 0.0, -4.0), 1.0).unwrap();
         let floor = DPlane::new(DVec3::new(0.0, -2.0, 0.0), DVec3::Y).unwrap();
-        s.push(DObject::new(ball.into(), BALL)).unwrap();
-        s.push(DObject::new(floor.into(), FLOOR)).unwrap();
+        s.push(DObject::matte(ball.into(), BALL)).unwrap();
+        s.push(DObject::matte(floor.into(), FLOOR)).unwrap();
         s
     }
 

@@ -1,0 +1,100 @@
+//! Shading a hit: lights, shadow rays, highlights and mirror bounces, without recursion.
+
+use crate::fx::{self, Fx};
+use crate::hit::Hit;
+use crate::ray::Ray;
+use crate::scene::{Object, Scene};
+use crate::shading::{Linear, channel_to_linear, powi};
+use crate::vec3::Vec3;
+
+impl<const N: usize, const L: usize> Scene<N, L> {
+    /// The light arriving along `ray`, whose first hit is `hit`, in linear units.
+    ///
+    /// Mirrors are followed in a loop, not by recursion: each bounce adds its surface's light
+    /// times the product of the reflectivities so far, and the ray that leaves the last
+    /// allowed bounce sees the background. The stack stays the same size at any depth.
+    pub(crate) fn radiance(&self, ray: &Ray, hit: Option<Hit>) -> Linear {
+        let (mut sum, mut weight) = ([Fx::ZERO; 3], Fx::ONE);
+        let (mut ray, mut hit) = (*ray, hit);
+        let mut bounce = 0;
+        loop {
+            let Some((h, object)) = hit.and_then(|h| Some((h, self.objects().get(h.object)?)))
+            else {
+                add(&mut sum, weight, self.background().along(ray.dir));
+                return sum;
+            };
+            let normal = facing(h.normal, ray.dir);
+            add(&mut sum, weight, self.local(object, &h, normal, ray.dir));
+            let reflect = object.material.reflect;
+            if reflect == Fx::ZERO {
+                return sum;
+            }
+            weight = fx::mul(weight, reflect);
+            ray = Ray::new_unchecked(h.point, mirror(ray.dir, normal));
+            if bounce == self.depth() {
+                add(&mut sum, weight, self.background().along(ray.dir));
+                return sum;
+            }
+            hit = self.shoot_from(&ray, Some(h.object));
+            bounce += 1;
+        }
+    }
+
+    /// The surface's own light at a hit: ambient and diffuse times its colour, plus white
+    /// highlights, from every light whose shadow ray reaches it.
+    fn local(&self, object: &Object, hit: &Hit, normal: Vec3, dir: Vec3) -> Linear {
+        let material = &object.material;
+        let (mut diffuse, mut specular) = (Fx::ZERO, Fx::ZERO);
+        for light in self.lights() {
+            let to_light = light.position - hit.point;
+            let Some(l) = to_light.try_normalize() else {
+                continue;
+            };
+            let cos = normal.dot(l);
+            if cos <= Fx::ZERO {
+                continue;
+            }
+            if self.shadows() {
+                let shadow_ray = Ray::new_unchecked(hit.point, l);
+                if self.occluded(&shadow_ray, to_light.length_squared_wide(), hit.object) {
+                    continue;
+                }
+            }
+            diffuse += fx::mul(light.intensity, cos);
+            if material.specular > Fx::ZERO
+                && let Some(half) = (l - dir).try_normalize()
+            {
+                let s = normal.dot(half).max(Fx::ZERO).min(Fx::ONE);
+                specular += fx::mul(light.intensity, powi(s, material.shininess));
+            }
+        }
+        let k = self.ambient() + fx::mul(material.diffuse, diffuse);
+        let highlight = fx::mul(material.specular, specular);
+        let colour = object.colour_at(hit.point);
+        let channel = |c: u8| fx::mul(channel_to_linear(c), k) + highlight;
+        [channel(colour.r), channel(colour.g), channel(colour.b)]
+    }
+}
+
+/// `sum += weight · c`.
+fn add(sum: &mut Linear, weight: Fx, c: Linear) {
+    for (s, c) in sum.iter_mut().zip(c) {
+        *s += fx::mul(weight, c);
+    }
+}
+
+/// The normal turned to face against the ray, so that a sphere seen from inside and a plane
+/// seen from behind are lit on the side the ray is on.
+fn facing(normal: Vec3, dir: Vec3) -> Vec3 {
+    if normal.dot_wide(dir) > 0 {
+        -normal
+    } else {
+        normal
+    }
+}
+
+/// The mirror direction `d − 2(d·n)n`, renormalised.
+fn mirror(dir: Vec3, normal: Vec3) -> Vec3 {
+    let along = normal.scale(dir.dot(normal) * 2);
+    (dir - along).try_normalize().unwrap_or(dir)
+}

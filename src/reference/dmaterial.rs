@@ -1,0 +1,124 @@
+//! [`DMaterial`] and [`DChecker`]: what a surface is made of, and a two-colour pattern.
+
+use crate::Rgb;
+
+/// How a surface answers light: Lambert diffuse, a white Blinn-Phong highlight and a mirror.
+///
+/// At a hit point seen along the unit direction `d`, with the unit normal `n` turned to face
+/// the eye and the surface colour `C` (counted 0..=1 for 0..=255), each light `i` at
+/// intensity `I_i` that is in front of the surface and not in shadow, with `l_i` the unit
+/// vector towards it and `h_i = (l_i − d)/‖l_i − d‖` the half vector between it and the eye,
+/// contributes to
+///
+/// `local = C·(ambient + diffuse·Σ I_i·(n·l_i)) + specular·Σ I_i·clamp(n·h_i, 0, 1)^shininess`
+///
+/// and a mirror adds `reflect` times what the reflected ray sees (see
+/// [`DScene::radiance`](super::DScene::radiance)).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DMaterial {
+    /// The surface colour under full white light (the even squares of a checkerboard).
+    pub colour: Rgb,
+    /// Weight of the diffuse term.
+    pub diffuse: f64,
+    /// Weight of the highlight, which is white: it adds to every channel alike.
+    pub specular: f64,
+    /// The highlight's exponent: larger is smaller and sharper.
+    pub shininess: u16,
+    /// Share of the mirror image added, 0 for none.
+    pub reflect: f64,
+    /// A checkerboard replacing `colour` on a plane.
+    pub checker: Option<DChecker>,
+}
+
+impl DMaterial {
+    /// A matte surface: diffuse weight 1, no highlight, no mirror, no checkerboard.
+    #[must_use]
+    pub const fn matte(colour: Rgb) -> Self {
+        DMaterial {
+            colour,
+            diffuse: 1.0,
+            specular: 0.0,
+            shininess: 1,
+            reflect: 0.0,
+            checker: None,
+        }
+    }
+}
+
+impl From<Rgb> for DMaterial {
+    fn from(colour: Rgb) -> Self {
+        DMaterial::matte(colour)
+    }
+}
+
+/// Squares of side `size` across a plane, alternating a material's colour with `other`.
+///
+/// The squares are laid out in the plane's coordinates `(u, v)` (see
+/// [`DPlane::coords`](super::DPlane::coords)): square `(⌊u/size⌋, ⌊v/size⌋)` shows the
+/// material's colour when the sum of the two indices is even, `other` when it is odd.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DChecker {
+    /// Side of a square, in world units; positive.
+    pub size: f64,
+    /// The colour of the odd squares.
+    pub other: Rgb,
+}
+
+impl DChecker {
+    /// The colour at plane coordinates `uv`, where the even squares are `even`.
+    #[must_use]
+    pub fn colour_at(&self, even: Rgb, uv: [f64; 2]) -> Rgb {
+        let square = libm::floor(uv[0] / self.size) + libm::floor(uv[1] / self.size);
+        // `fmod` keeps the sign: an odd negative sum gives −1, an even one ±0.
+        if libm::fmod(square, 2.0) == 0.0 {
+            even
+        } else {
+            self.other
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const WHITE: Rgb = Rgb::WHITE;
+    const BLACK: Rgb = Rgb::BLACK;
+
+    #[test]
+    fn squares_alternate_along_both_axes_and_across_zero() {
+        let board = DChecker {
+            size: 2.0,
+            other: BLACK,
+        };
+        let at = |u: f64, v: f64| board.colour_at(WHITE, [u, v]);
+        // Square (0, 0) is even; one step along u or v is odd; a diagonal step is even.
+        assert_eq!(at(0.5, 0.5), WHITE);
+        assert_eq!(at(2.5, 0.5), BLACK);
+        assert_eq!(at(0.5, 2.5), BLACK);
+        assert_eq!(at(2.5, 2.5), WHITE);
+        // Left of zero is square −1, not a second square 0.
+        assert_eq!(at(-0.5, 0.5), BLACK);
+        assert_eq!(at(-0.5, -0.5), WHITE);
+        assert_eq!(at(-2.5, 0.5), WHITE);
+    }
+
+    #[test]
+    fn a_square_includes_its_lower_edge() {
+        let board = DChecker {
+            size: 0.25,
+            other: BLACK,
+        };
+        assert_eq!(board.colour_at(WHITE, [0.25, 0.0]), BLACK);
+        assert_eq!(board.colour_at(WHITE, [0.249_999, 0.0]), WHITE);
+        assert_eq!(board.colour_at(WHITE, [-0.25, 0.0]), BLACK);
+    }
+
+    #[test]
+    fn a_colour_is_a_matte_material() {
+        let m = DMaterial::from(Rgb::new(1, 2, 3));
+        assert_eq!(m.colour, Rgb::new(1, 2, 3));
+        assert_eq!((m.diffuse, m.specular, m.reflect), (1.0, 0.0, 0.0));
+        assert_eq!(m.checker, None);
+    }
+}
