@@ -67,6 +67,7 @@ mod material;
 mod plane;
 mod ray;
 mod render;
+mod rsqrt;
 mod scene;
 mod shading;
 mod sphere;

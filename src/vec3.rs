@@ -3,8 +3,9 @@
 use core::ops::{Add, Neg, Sub};
 
 use crate::error::Error;
-use crate::fx::{self, FRAC, Fx};
+use crate::fx::{self, Fx};
 use crate::isqrt::isqrt;
+use crate::rsqrt::rsqrt;
 
 /// A point or a direction with three Q16.16 components.
 ///
@@ -158,11 +159,10 @@ impl Vec3 {
 
     /// The unit vector along `self`, or `None` for the zero vector.
     ///
-    /// The length is taken with 30 or more significant bits whatever the size of `self`: the
-    /// exact squared length is shifted up by an even number of bits `2s` until it nearly fills
-    /// 62 bits, so `isqrt` returns `‖self‖ · 2^(16+s)`. Each component is then divided by that
-    /// and rounded to nearest, so every component is within one unit of 2⁻¹⁶ of the exact unit
-    /// vector, even for vectors a few units of 2⁻¹⁶ long.
+    /// The exact squared length goes through a table-seeded reciprocal square root (good to
+    /// about 2⁻²⁸ whatever the size of `self`), and each component is multiplied by it and
+    /// rounded to nearest: every component is within one unit of 2⁻¹⁶ of the exact unit
+    /// vector, even for vectors a few units of 2⁻¹⁶ long, and no division is needed.
     ///
     /// ```
     /// use fixray::{Fx, Vec3};
@@ -175,20 +175,15 @@ impl Vec3 {
         if square == 0 {
             return None;
         }
-        // 2s: the even shift that brings the square just below 2⁶².
-        let shift = square.leading_zeros().saturating_sub(2) & !1;
-        let length = isqrt(square << shift) as i64; // ‖self‖ · 2^(16 + shift/2), below 2³¹
-        let div = |c: Fx| {
-            // |c| ≤ ‖self‖, so the numerator stays below 2⁴⁷ and the quotient within ±2¹⁶.
-            let n = (c.to_bits() as i64) << (FRAC + shift / 2);
-            let q = if n >= 0 {
-                (n + length / 2) / length
-            } else {
-                (n - length / 2) / length
-            };
-            Fx::from_bits(q as i32)
+        // 1/‖self‖ in units of 2⁻¹⁶ is y · 2⁻⁽³⁰⁺ˢʰⁱᶠᵗ⁾ · 2¹⁶.
+        let (y, shift) = rsqrt(square);
+        let shift = 14 + shift;
+        let scale = |c: Fx| {
+            // |c| ≤ 2³¹ and y < 2³¹: the product fits i64.
+            let p = c.to_bits() as i64 * y as i64;
+            Fx::from_bits(((p + (1 << (shift - 1))) >> shift) as i32)
         };
-        Some(Vec3::new(div(self.x), div(self.y), div(self.z)))
+        Some(Vec3::new(scale(self.x), scale(self.y), scale(self.z)))
     }
 
     /// The unit vector along `self`, or the zero vector when `self` is zero.
@@ -271,6 +266,39 @@ mod tests {
         assert_eq!(n, v(0.6, 0.8, 0.0));
         assert_eq!(Vec3::ZERO.try_normalize(), None);
         assert_eq!(Vec3::ZERO.normalize_or_zero(), Vec3::ZERO);
+    }
+
+    #[test]
+    fn normalize_is_within_one_unit_of_exact() {
+        let mut seed = 0x2545_f491_4f6c_dd1du64;
+        let mut next = || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            // Components of every magnitude, from a few units of 2⁻¹⁶ to Q16.16's limit.
+            let magnitude = (seed >> 59) as u32; // 0..32
+            ((seed as i64 as i32) >> (31 - magnitude.min(31))) as i32
+        };
+        for _ in 0..100_000 {
+            let v = Vec3::new(
+                Fx::from_bits(next()),
+                Fx::from_bits(next()),
+                Fx::from_bits(next()),
+            );
+            let Some(n) = v.try_normalize() else {
+                assert_eq!(v, Vec3::ZERO);
+                continue;
+            };
+            let [x, y, z] = v.to_f64();
+            let len = (x * x + y * y + z * z).sqrt();
+            for (got, c) in [(n.x, x), (n.y, y), (n.z, z)] {
+                let exact = c / len * 65536.0;
+                assert!(
+                    (got.to_bits() as f64 - exact).abs() <= 1.0,
+                    "{v:?}: {got} vs {exact}"
+                );
+            }
+        }
     }
 
     #[test]
