@@ -297,6 +297,12 @@ impl Camera {
         Ray::new_unchecked(self.eye, dir)
     }
 
+    /// The unit normal of the plane through the eye that holds every ray of display row
+    /// `row` (the rays of a row differ only along `right`), or `None` if it is degenerate.
+    pub(crate) fn row_plane_normal(&self, row: u16) -> Option<Vec3> {
+        self.right.cross(self.towards(row, 0)).try_normalize()
+    }
+
     /// The ray through sample (`sx`, `sy`) of an `n × n` grid of sub-pixel centres in pixel
     /// (`row`, `col`), for supersampling: sample `(s, t)` sits at
     /// `(col + (2s + 1)/(2n), row + (2t + 1)/(2n))`. `n` is clamped to 1..=16; `n = 1` is

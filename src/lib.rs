@@ -54,6 +54,7 @@ mod background;
 mod camera;
 mod color;
 pub mod demo;
+mod divide;
 pub mod draw;
 mod error;
 mod framebuffer;

@@ -1,7 +1,8 @@
 //! [`Plane`] and ray–plane intersection (section 4.3, Eq. 4.2).
 
+use crate::divide::div_q16;
 use crate::error::Error;
-use crate::fx::{FAR, FRAC, Fx};
+use crate::fx::{FAR, Fx};
 use crate::hit::Hit;
 use crate::ray::Ray;
 use crate::vec3::Vec3;
@@ -144,34 +145,49 @@ impl Plane {
     /// ```
     #[must_use]
     pub fn intersect(&self, ray: &Ray) -> Option<Hit> {
+        let t = self.hit_distance(ray)?;
+        Some(self.hit_at(ray, t))
+    }
+
+    /// The `t` of [`Plane::intersect`] alone, without the hit's normal.
+    #[must_use]
+    pub fn hit_distance(&self, ray: &Ray) -> Option<Fx> {
         // Both are exact Q32.32 values.
         let den = self.normal.dot_wide(ray.dir);
         let num = -self.normal.dot_wide(ray.origin - self.point);
         if den == 0 || (num != 0 && (num < 0) != (den < 0)) {
             return None; // parallel, or the plane is behind the origin
         }
-        let (num, den_abs) = (num.unsigned_abs(), den.unsigned_abs());
+        let (num, den) = (num.unsigned_abs(), den.unsigned_abs());
         // t ≤ FAR  ⇔  |num| ≤ FAR·|den|; |den| ≤ 2³³ so the product fits.
-        if num > den_abs * FAR.to_num::<u64>() {
+        if num > den * FAR.to_num::<u64>() {
             return None;
         }
-        // |num| ≤ 2¹³·2³³, so shifting by 16 stays below 2⁶². Rounded to nearest.
-        let t = ((num << FRAC) + den_abs / 2) / den_abs;
-        let t = Fx::from_bits(t as i32);
-        let point = ray.at(t);
+        // t ≤ 2¹³: the quotient fits, within a unit of 2⁻¹⁶ of the exact one.
+        let t = Fx::from_bits(div_q16(num, den) as i32);
         if let Some([min, max]) = self.bounds {
-            let [u, v] = self.coords(point);
+            let [u, v] = self.coords(ray.at(t));
             if u < min[0] || u > max[0] || v < min[1] || v > max[1] {
                 return None;
             }
         }
-        let normal = if den < 0 { self.normal } else { -self.normal };
-        Some(Hit {
+        Some(t)
+    }
+
+    /// The hit at distance `t` along `ray`, its normal facing the ray.
+    #[must_use]
+    pub fn hit_at(&self, ray: &Ray, t: Fx) -> Hit {
+        let normal = if self.normal.dot_wide(ray.dir) < 0 {
+            self.normal
+        } else {
+            -self.normal
+        };
+        Hit {
             t,
-            point,
+            point: ray.at(t),
             normal,
             object: 0,
-        })
+        }
     }
 }
 

@@ -27,8 +27,10 @@ pub fn render_row<const N: usize, const L: usize>(
     out: &mut [Rgb],
 ) -> Result<(), Error> {
     check_row(camera, row, out)?;
+    let among = scene.seen_from_row(camera, row);
     for (col, pixel) in out.iter_mut().enumerate() {
-        *pixel = scene.trace(&camera.ray(row, col as u16));
+        let ray = camera.ray(row, col as u16);
+        *pixel = scene.shade(&ray, scene.shoot_among(&ray, among).as_ref());
     }
     Ok(())
 }

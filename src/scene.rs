@@ -26,9 +26,25 @@ impl Shape {
     /// The first hit of `ray` on this shape, if any.
     #[must_use]
     pub fn intersect(&self, ray: &Ray) -> Option<Hit> {
+        let t = self.hit_distance(ray)?;
+        Some(self.hit_at(ray, t))
+    }
+
+    /// The distance `t` to the first hit alone.
+    #[must_use]
+    pub fn hit_distance(&self, ray: &Ray) -> Option<Fx> {
         match self {
-            Shape::Plane(p) => p.intersect(ray),
-            Shape::Sphere(s) => s.intersect(ray),
+            Shape::Plane(p) => p.hit_distance(ray),
+            Shape::Sphere(s) => s.hit_distance(ray),
+        }
+    }
+
+    /// The hit at distance `t` along `ray`.
+    #[must_use]
+    pub fn hit_at(&self, ray: &Ray, t: Fx) -> Hit {
+        match self {
+            Shape::Plane(p) => p.hit_at(ray, t),
+            Shape::Sphere(s) => s.hit_at(ray, t),
         }
     }
 }
@@ -209,21 +225,57 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// larger than the hit point's rounding (which grows with distance) and would detach
     /// shadows from the objects that cast them.
     pub(crate) fn shoot_from(&self, ray: &Ray, leaving: Option<usize>) -> Option<Hit> {
-        let mut nearest: Option<Hit> = None;
-        for (index, object) in self.objects.iter().enumerate() {
-            if Some(index) == leaving {
-                continue;
-            }
-            if let Some(hit) = object.shape.intersect(ray)
-                && nearest.is_none_or(|best| hit.t < best.t)
-            {
-                nearest = Some(Hit {
-                    object: index,
-                    ..hit
-                });
+        let skip = leaving.map_or(0, |i| 1u64.checked_shl(i as u32).unwrap_or(0));
+        self.shoot_among(ray, !skip)
+    }
+
+    /// The objects that rays of display row `row` can meet, as a bit set for
+    /// [`Scene::shoot_among`]: planes always, spheres only when their centre lies within
+    /// their radius (plus a margin for the rounding of ray directions) of the plane that
+    /// holds the row's rays. A row sees few of the spheres, and skipping the rest is the
+    /// cheapest intersection test there is.
+    pub(crate) fn seen_from_row(&self, camera: &crate::Camera, row: u16) -> u64 {
+        let Some(normal) = camera.row_plane_normal(row) else {
+            return !0;
+        };
+        let mut among = !0u64;
+        for (index, object) in self.objects.iter().enumerate().take(64) {
+            if let Shape::Sphere(sphere) = object.shape {
+                let to_centre = sphere.centre() - camera.eye();
+                // Ray directions are within a few units of 2⁻¹⁶ of the row plane: over a
+                // distance D they stray by less than D · 2⁻¹², and the normal's own rounding
+                // adds as much again.
+                let reach = to_centre.x.abs() + to_centre.y.abs() + to_centre.z.abs();
+                let margin = (reach >> 11) + Fx::from_bits(1 << 8);
+                if normal.dot(to_centre).abs() > sphere.radius() + margin {
+                    among &= !(1 << index);
+                }
             }
         }
-        nearest
+        among
+    }
+
+    /// The nearest hit among the objects whose bit is set in `among` (bit `i` for object `i`;
+    /// objects past the 64th are always tried). Distances first; the hit point and normal
+    /// only for the nearest.
+    pub(crate) fn shoot_among(&self, ray: &Ray, among: u64) -> Option<Hit> {
+        let mut nearest: Option<(Fx, usize)> = None;
+        for (index, object) in self.objects.iter().enumerate() {
+            if index < 64 && among & (1 << index) == 0 {
+                continue;
+            }
+            if let Some(t) = object.shape.hit_distance(ray)
+                && nearest.is_none_or(|(best, _)| t < best)
+            {
+                nearest = Some((t, index));
+            }
+        }
+        let (t, index) = nearest?;
+        let hit = self.objects[index].shape.hit_at(ray, t);
+        Some(Hit {
+            object: index,
+            ..hit
+        })
     }
 
     /// Whether anything but object `leaving` lies on `ray` closer than `√distance_squared`
@@ -231,8 +283,8 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     pub(crate) fn occluded(&self, ray: &Ray, distance_squared: u64, leaving: usize) -> bool {
         self.objects.iter().enumerate().any(|(index, object)| {
             index != leaving
-                && object.shape.intersect(ray).is_some_and(|hit| {
-                    let t = hit.t.to_bits() as u64;
+                && object.shape.hit_distance(ray).is_some_and(|t| {
+                    let t = t.to_bits() as u64;
                     t * t < distance_squared
                 })
         })

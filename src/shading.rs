@@ -7,9 +7,12 @@ use crate::fx::Fx;
 pub(crate) type Linear = [Fx; 3];
 
 /// A channel of 0..=255 as 0..=1, rounded to nearest.
+///
+/// `c · 2¹⁶ / 255 = c · 257 + c/255`, and `c/255` rounds to 1 exactly when `c ≥ 128`: no
+/// division.
 #[inline]
 pub(crate) const fn channel_to_linear(c: u8) -> Fx {
-    Fx::from_bits(((c as i32) * 65536 + 127) / 255)
+    Fx::from_bits(c as i32 * 257 + (c >= 128) as i32)
 }
 
 /// A summed channel back to 0..=255: times 255, rounded half up, clamped.
@@ -60,6 +63,14 @@ pub(crate) fn powi(base: Fx, exponent: u16) -> Fx {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn channels_convert_as_the_rounded_quotient() {
+        for c in 0..=255i32 {
+            let exact = (c * 65536 + 127) / 255;
+            assert_eq!(channel_to_linear(c as u8).to_bits(), exact, "{c}");
+        }
+    }
 
     #[test]
     fn channels_survive_the_round_trip() {

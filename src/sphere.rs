@@ -12,6 +12,10 @@ use crate::vec3::Vec3;
 pub struct Sphere {
     centre: Vec3,
     radius: Fx,
+    /// `2^(31 + inv_shift) / r` in raw units, in `(2³⁰, 2³¹)`: the normal `(x − c)/r` is a
+    /// multiplication by it instead of three divisions.
+    inv_radius: i32,
+    inv_shift: u32,
 }
 
 impl Sphere {
@@ -32,14 +36,31 @@ impl Sphere {
             return Err(Error::NonPositiveRadius);
         }
         fx::check_range(radius, "sphere radius")?;
-        Ok(Sphere { centre, radius })
+        Ok(Sphere::new_unchecked(centre, radius))
     }
 
     /// A sphere whose values the caller promises are valid (`0 < radius ≤ 1024`, centre
     /// within ±1024). For `const` scenes.
     #[must_use]
     pub const fn new_unchecked(centre: Vec3, radius: Fx) -> Self {
-        Sphere { centre, radius }
+        // r in raw units lies in [2^k, 2^(k+1)); 2^(31+k)/r then lies in (2³⁰, 2³¹].
+        let r = if radius.to_bits() > 0 {
+            radius.to_bits() as u64
+        } else {
+            1
+        };
+        let k = 63 - r.leading_zeros();
+        let inv = (1u64 << (31 + k)) / r;
+        Sphere {
+            centre,
+            radius,
+            inv_radius: if inv > i32::MAX as u64 {
+                i32::MAX
+            } else {
+                inv as i32
+            },
+            inv_shift: k,
+        }
     }
 
     /// The centre `c`.
@@ -75,8 +96,19 @@ impl Sphere {
     /// ```
     #[must_use]
     pub fn intersect(&self, ray: &Ray) -> Option<Hit> {
+        let t = self.hit_distance(ray)?;
+        Some(self.hit_at(ray, t))
+    }
+
+    /// The `t` of [`Sphere::intersect`] alone, without the hit point and normal: what the
+    /// scene needs to find the nearest object and to test shadow rays.
+    #[must_use]
+    pub fn hit_distance(&self, ray: &Ray) -> Option<Fx> {
         let to_centre = self.centre - ray.origin;
         let t_close = ray.dir.dot(to_centre);
+        if t_close < -self.radius {
+            return None; // wholly behind the origin
+        }
         // x_close − c = t_close·u_r − (c − p_r)
         let d2 = (ray.dir.scale(t_close) - to_centre).length_squared_wide();
         let r2 = fx::wide_mul(self.radius.to_bits(), self.radius.to_bits()).unsigned_abs();
@@ -92,31 +124,34 @@ impl Sphere {
         if t < Fx::ZERO || t > FAR {
             return None;
         }
+        Some(t)
+    }
+
+    /// The hit at distance `t` along `ray`: its point and outward normal.
+    #[must_use]
+    pub fn hit_at(&self, ray: &Ray, t: Fx) -> Hit {
         let point = ray.at(t);
-        Some(Hit {
+        Hit {
             t,
             point,
             normal: self.normal_at(point),
             object: 0,
-        })
+        }
     }
 
-    /// The outward unit normal `(x − c) / r` at a point `x` on the surface.
+    /// The outward unit normal `(x − c) / r` at a point `x` on the surface, as a
+    /// multiplication by the reciprocal radius kept since construction.
     #[must_use]
     pub fn normal_at(&self, x: Vec3) -> Vec3 {
-        let r = self.radius.to_bits() as i64;
-        let div = |c: Fx| {
-            let n = (c.to_bits() as i64) << FRAC;
-            let q = if n >= 0 {
-                (n + r / 2) / r
-            } else {
-                (n - r / 2) / r
-            };
+        let shift = FRAC - 1 + self.inv_shift; // (v·2^(31+k)/r) / 2^(15+k) = v·2¹⁶/r
+        let scale = |c: Fx| {
+            let p = c.to_bits() as i64 * self.inv_radius as i64;
+            let q = (p + (1 << (shift - 1))) >> shift;
             // A point within rounding of the surface gives |q| ≤ 2¹⁶ plus a few units.
             Fx::from_bits(q.clamp(-(1 << FRAC), 1 << FRAC) as i32)
         };
         let v = x - self.centre;
-        Vec3::new(div(v.x), div(v.y), div(v.z))
+        Vec3::new(scale(v.x), scale(v.y), scale(v.z))
     }
 }
 

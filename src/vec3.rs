@@ -147,7 +147,7 @@ impl Vec3 {
     /// ‖self‖, truncated to Q16.16: `isqrt` of the exact Q32.32 square.
     #[inline]
     #[must_use]
-    pub const fn length(self) -> Fx {
+    pub fn length(self) -> Fx {
         let root = isqrt(self.length_squared_wide());
         // The root is below √3 · 2³¹; above i32::MAX it saturates.
         if root > i32::MAX as u64 {

@@ -277,3 +277,35 @@ fn supersampling_blends_an_edge() {
         "{plain:?}"
     );
 }
+
+#[test]
+fn culling_spheres_per_row_changes_no_pixel() {
+    // render_row skips spheres that a row's plane of rays cannot meet; every pixel must still
+    // be what tracing its ray against every object gives.
+    for (scene, camera) in [
+        (
+            fixray::demo::scene(),
+            fixray::demo::camera(160, 128).unwrap(),
+        ),
+        (
+            fixray::demo::classic(),
+            fixray::demo::classic_camera(160, 128).unwrap(),
+        ),
+        (
+            fixray::demo::classic(),
+            Camera::orbit([0.0, 0.0, -15.0], 15.0, 40.0, 25.0, 50.0, 97, 61).unwrap(),
+        ),
+    ] {
+        let mut row = vec![Rgb::BLACK; camera.cols() as usize];
+        for y in 0..camera.rows() {
+            render_row(&scene, &camera, y, &mut row).unwrap();
+            for (x, &pixel) in row.iter().enumerate() {
+                assert_eq!(
+                    pixel,
+                    scene.trace(&camera.ray(y, x as u16)),
+                    "pixel ({x}, {y})"
+                );
+            }
+        }
+    }
+}
