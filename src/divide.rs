@@ -64,7 +64,7 @@ mod tests {
         for _ in 0..1_000_000 {
             let den = (next() >> (next() % 60)).max(1);
             // A quotient of up to 2²⁹ (t up to 8192 in Q16.16).
-            let num = ((next() as u128 % (1u128 << 29)) * den as u128 >> 16) as u64;
+            let num = (((next() as u128 % (1u128 << 29)) * den as u128) >> 16) as u64;
             let exact = (num as f64) * 65536.0 / den as f64;
             let got = div_q16(num, den) as f64;
             let bound = 1.0 + exact / 2f64.powi(27);

@@ -277,7 +277,7 @@ mod tests {
             seed ^= seed << 17;
             // Components of every magnitude, from a few units of 2⁻¹⁶ to Q16.16's limit.
             let magnitude = (seed >> 59) as u32; // 0..32
-            ((seed as i64 as i32) >> (31 - magnitude.min(31))) as i32
+            (seed as i64 as i32) >> (31 - magnitude.min(31))
         };
         for _ in 0..100_000 {
             let v = Vec3::new(
