@@ -233,8 +233,21 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// [`Scene::shoot_among`]: planes always, spheres only when their centre lies within
     /// their radius (plus a margin for the rounding of ray directions) of the plane that
     /// holds the row's rays. A row sees few of the spheres, and skipping the rest is the
-    /// cheapest intersection test there is.
-    pub(crate) fn seen_from_row(&self, camera: &crate::Camera, row: u16) -> u64 {
+    /// cheapest intersection test there is. [`render_row`](crate::render_row) does this; a
+    /// loop of its own over a row's pixels can too:
+    ///
+    /// ```
+    /// use fixray::demo;
+    /// let (scene, camera) = (demo::scene(), demo::camera(160, 128).unwrap());
+    /// let among = scene.seen_from_row(&camera, 0);
+    /// // The top row looks 29.8° up; the highest sphere, (7, 5, −18) r 4, reaches 27.1°: the
+    /// // row can meet only the ground plane, object 0.
+    /// assert_eq!(among & 0b11111, 0b00001);
+    /// let ray = camera.ray(0, 80);
+    /// assert_eq!(scene.shoot_among(&ray, among), scene.shoot(&ray));
+    /// ```
+    #[must_use]
+    pub fn seen_from_row(&self, camera: &crate::Camera, row: u16) -> u64 {
         let Some(normal) = camera.row_plane_normal(row) else {
             return !0;
         };
@@ -258,7 +271,8 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// The nearest hit among the objects whose bit is set in `among` (bit `i` for object `i`;
     /// objects past the 64th are always tried). Distances first; the hit point and normal
     /// only for the nearest.
-    pub(crate) fn shoot_among(&self, ray: &Ray, among: u64) -> Option<Hit> {
+    #[must_use]
+    pub fn shoot_among(&self, ray: &Ray, among: u64) -> Option<Hit> {
         let mut nearest: Option<(Fx, usize)> = None;
         for (index, object) in self.objects.iter().enumerate() {
             if index < 64 && among & (1 << index) == 0 {
