@@ -1,9 +1,16 @@
 #!/usr/bin/env bash
-# Renders fixray's demo scene (160 × 128) on three microcontrollers under QEMU, checks every
-# frame's hash against the host's render, and prints one row per target and renderer:
+# Renders fixray's demo and classic scenes (160 × 128) on three microcontrollers under QEMU,
+# checks every frame's hash against the host's render, and prints one row per target,
+# renderer and scene:
 #
-#   target, renderer, hash (match / MISMATCH), instructions per frame and per pixel,
-#   flash bytes, RAM bytes (static RAM + peak stack, also shown apart).
+#   target, renderer (with the scene: `fixed`, `fixed-classic`, `reference-f32`, ...),
+#   hash (match / MISMATCH), instructions per frame and per pixel, flash bytes, RAM bytes
+#   (static RAM + peak stack, also shown apart).
+#
+# Each row is one of the firmware's binaries, which renders one scene with one renderer:
+# `fixed` (Q16.16), `reference` (the f64 reference model) or `reference_f32` (the same model in
+# f32), on the demo scene or the classic one (`_classic`), the latter also without shadow rays
+# (`_noshadow`) and without mirrors (`_nomirror`) to show what each costs.
 #
 # Usage: scripts/firmware.sh
 #
@@ -23,7 +30,8 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 firmware="$root/firmware"
 targets=(thumbv6m-none-eabi thumbv7em-none-eabihf riscv32imc-unknown-none-elf)
-bins=(fixed reference)
+bins=(fixed fixed_classic fixed_classic_noshadow fixed_classic_nomirror
+    reference reference_classic reference_f32 reference_f32_classic)
 
 # --- What it needs -------------------------------------------------------------------------
 
@@ -58,8 +66,8 @@ fi
 
 # --- The host's hashes ---------------------------------------------------------------------
 
-# Lines of `renderer hash`, e.g. `fixed 0x1234abcd`. The dev profile reuses what `cargo test`
-# built; the hashes are the same in any profile.
+# Lines of `renderer hash`, e.g. `fixed-classic 0x1234abcd`, for every renderer and scene. The
+# dev profile reuses what `cargo test` built; the hashes are the same in any profile.
 host=$(cd "$root" && cargo run --quiet --features reference --example frame_hash)
 declare -A host_hash
 while read -r renderer hash; do
@@ -84,7 +92,8 @@ line() { # prefix: the line of the current run's report that starts with it
 
 failed=0
 calibrations=()
-row() { printf '%-28s %-14s %-8s %12s %9s %7s %7s %7s %7s\n' "$@"; }
+names=()
+row() { printf '%-28s %-24s %-8s %12s %9s %7s %7s %7s %7s\n' "$@"; }
 row target renderer hash instr/frame instr/px flash ram static stack
 for target in "${targets[@]}"; do
     for bin in "${bins[@]}"; do
@@ -102,6 +111,7 @@ for target in "${targets[@]}"; do
             failed=1
             continue
         fi
+        [[ " ${names[*]} " == *" $renderer "* ]] || names+=("$renderer")
         verdict=MISMATCH
         [[ $hash == "${host_hash[$renderer]:-none}" ]] && verdict=match
         [[ $verdict == match ]] || failed=1
@@ -121,7 +131,10 @@ for target in "${targets[@]}"; do
 done
 
 echo
-echo "host hashes: fixed ${host_hash[fixed]:-none}, reference-f64 ${host_hash[reference-f64]:-none}"
+echo "host hashes (examples/frame_hash.rs):"
+for renderer in "${names[@]}"; do
+    printf '  %-24s %s\n' "$renderer" "${host_hash[$renderer]:-none}"
+done
 echo "instruction counters (QEMU -icount shift=0), each checked by a loop of known length:"
 printf '  %s\n' "${calibrations[@]}"
 echo "ram = static RAM + peak stack, in bytes; instructions count the render_row calls only."

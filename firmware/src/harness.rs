@@ -1,14 +1,15 @@
-//! The measured run: calibrate the counter, render the frame row by row, report, exit.
+//! The measured run: calibrate the counter, set up the scene, render the frame row by row,
+//! report, exit.
 //!
 //! What it prints, one `key=value` line per topic, is what `scripts/firmware.sh` parses:
 //!
 //! ```text
-//! board=microbit target=thumbv6m-none-eabi renderer=fixed
+//! board=microbit target=thumbv6m-none-eabi renderer=fixed-classic
 //! counter: SysTick, 16 MHz core clock instructions_per_tick=62.5
 //! calibration: expected=20000000 measured=20000062
-//! setup: instructions=3312
-//! frame: cols=160 rows=128 hash=0xe37b0dc1 instructions=165596187 per_pixel=8085.7
-//! memory: flash=30220 static_ram=4 peak_stack=1904
+//! setup: instructions=12062
+//! frame: cols=160 rows=128 hash=0x9fdef876 instructions=183186250 per_pixel=8944.6
+//! memory: flash=40784 static_ram=4 peak_stack=3908
 //! ```
 
 use core::fmt::{self, Debug, Display};
@@ -16,44 +17,28 @@ use core::fmt::{self, Debug, Display};
 use fixray::{FrameHash, Rgb};
 use semihosting::{eprintln, println};
 
+use crate::renderer::{COLS, ROWS, Renderer, Variant};
 use crate::{calibrate, counter, exit, memory, stack};
 
-/// Columns of the frame.
-pub const COLS: u16 = 160;
-/// Rows of the frame.
-pub const ROWS: u16 = 128;
-
-/// A renderer the firmware can measure: built once, then asked for one row at a time.
-pub trait Renderer: Sized {
-    /// Its name in the report and the script's table.
-    const NAME: &'static str;
-    /// Why it refused.
-    type Error: Debug;
-
-    /// Sets up the demo scene for a `cols × rows` frame.
-    fn new(cols: u16, rows: u16) -> Result<Self, Self::Error>;
-
-    /// Renders row `row` (0 at the top) into `out`, `cols` pixels long.
-    fn render_row(&self, row: u16, out: &mut [Rgb]) -> Result<(), Self::Error>;
-}
-
-/// Renders and measures one frame with `R`, prints the report and ends the QEMU run.
+/// Renders and measures one frame of `variant` with `R`, prints the report and ends the QEMU
+/// run.
 ///
 /// The peak stack it reports is that of the set-up and the frame (painted after the first
 /// reports, read before the last), counted from the top of the stack, so it includes `main`
 /// and the row buffer but not the printing.
-pub fn run<R: Renderer>() -> ! {
+pub fn run<R: Renderer>(variant: Variant) -> ! {
     println!(
-        "board={} target={} renderer={}",
+        "board={} target={} renderer={}{}",
         crate::MACHINE,
         crate::TARGET,
-        R::NAME
+        R::NAME,
+        variant.suffix()
     );
     check_counter();
 
     stack::paint();
     let before = counter::ticks();
-    let renderer = R::new(COLS, ROWS).unwrap_or_else(|e| refused("set-up", e));
+    let renderer = R::new(variant, COLS, ROWS).unwrap_or_else(|e| refused("set-up", e));
     let setup = counter::ticks().wrapping_sub(before);
     println!(
         "setup: instructions={}",

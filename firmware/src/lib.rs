@@ -1,10 +1,22 @@
-//! fixray's demo scene on three microcontrollers under QEMU, rendered and measured.
+//! fixray's demo and classic scenes on three microcontrollers under QEMU, rendered and
+//! measured.
 //!
-//! Each binary (`fixed`, `reference`) renders the demo scene at [`COLS`] × [`ROWS`] one row at
-//! a time, so it fits the 16 KiB of a Cortex-M0, and prints over semihosting what
-//! `scripts/firmware.sh` turns into a table: the [`fixray::FrameHash`] of the frame (the host
-//! computes the same one), the instructions the rows took, the flash image, the static RAM and
-//! the peak stack. It then exits QEMU with status 0, or with a non-zero [`exit`] code on any
+//! Each binary renders one scene ([`Variant`]) with one [`Renderer`] — [`Fixed`], the Q16.16
+//! renderer, or [`Reference`], the reference model in `f64` or `f32` — at [`COLS`] × [`ROWS`],
+//! one row at a time, so it fits the 16 KiB of a Cortex-M0. One scene a binary keeps each
+//! row of the table to what that scene alone needs in flash and RAM:
+//!
+//! | binary | renders |
+//! |---|---|
+//! | `fixed`, `fixed_classic` | the demo and the classic scene in Q16.16 |
+//! | `fixed_classic_noshadow`, `fixed_classic_nomirror` | the classic scene without shadow rays, without mirrors |
+//! | `reference`, `reference_classic` | both scenes by the `f64` reference (soft-float everywhere) |
+//! | `reference_f32`, `reference_f32_classic` | both scenes by the reference in `f32` (the Cortex-M4F's FPU) |
+//!
+//! It prints over semihosting what `scripts/firmware.sh` turns into a table: the
+//! [`fixray::FrameHash`] of the frame (the host computes the same one, with the same
+//! [`renderer`] code), the instructions the rows took, the flash image, the static RAM and the
+//! peak stack. It then exits QEMU with status 0, or with a non-zero [`exit`] code on any
 //! failure; a panic exits with 101 (semihosting's panic handler).
 //!
 //! | target | board (QEMU machine) | instruction counter |
@@ -21,11 +33,12 @@
 //! The modules, one concept each: [`counter`] (the board's instruction counter),
 //! [`calibrate`] (the loop of known length), [`stack`] (paint and measure the stack),
 //! [`memory`] (flash and static RAM from the linker's symbols), [`fault`] (faults exit QEMU
-//! non-zero), [`exit`] (the exit statuses), [`harness`] (the measured frame, driven through
-//! the [`Renderer`] trait). `build.rs` picks each board's memory layout from `memory/`.
+//! non-zero), [`exit`] (the exit statuses), [`renderer`] (what is rendered: the scenes and the
+//! [`Renderer`]s), [`harness`] (the measured frames), and [`main!`] (a binary's entry point).
+//! `build.rs` picks each board's memory layout from `memory/`.
 //!
 //! Run one firmware from this directory with, for example,
-//! `cargo run --release --target thumbv6m-none-eabi --bin fixed`: the runners in
+//! `cargo run --release --target thumbv6m-none-eabi --bin fixed_classic`: the runners in
 //! `.cargo/config.toml` start QEMU. `scripts/firmware.sh` runs them all.
 
 #![no_std]
@@ -42,9 +55,29 @@ pub mod exit;
 pub mod fault;
 pub mod harness;
 pub mod memory;
+pub mod renderer;
 pub mod stack;
 
-pub use harness::{COLS, ROWS, Renderer, run};
+pub use harness::run;
+pub use renderer::{COLS, Fixed, ROWS, Reference, Renderer, Variant};
+
+/// The entry point of a firmware binary: [`run`] with the renderer `$renderer` on the scene
+/// [`Variant`]`::$variant`, started by the board's start-up crate (`cortex-m-rt` or
+/// `riscv-rt`).
+///
+/// ```ignore
+/// fixray_firmware::main!(fixray_firmware::Fixed, Classic);
+/// ```
+#[macro_export]
+macro_rules! main {
+    ($renderer:ty, $variant:ident) => {
+        #[cfg_attr(target_arch = "arm", cortex_m_rt::entry)]
+        #[cfg_attr(target_arch = "riscv32", riscv_rt::entry)]
+        fn main() -> ! {
+            $crate::run::<$renderer>($crate::Variant::$variant)
+        }
+    };
+}
 
 /// The target triple this firmware was built for.
 pub const TARGET: &str = env!("FIRMWARE_TARGET");

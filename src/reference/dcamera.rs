@@ -1,6 +1,6 @@
 //! [`DCamera`]: the pinhole camera of section 4.1, and the same camera aimed anywhere.
 
-use super::{DRay, DVec3};
+use super::{DRay, DVec3, Real};
 
 /// A pinhole camera: an eye and a view screen of `rows × cols` pixels in front of it.
 ///
@@ -15,29 +15,29 @@ use super::{DRay, DVec3};
 /// [`ray`](Self::ray) takes *display* coordinates instead: row 0 is the top of the picture,
 /// so display row `row` is chapter row `i = rows − 1 − row`. Column 0 is on the left in both.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct DCamera {
-    eye: DVec3,
-    centre: DVec3,
-    right: DVec3,
-    up: DVec3,
-    width: f64,
-    height: f64,
+pub struct DCamera<F: Real = f64> {
+    eye: DVec3<F>,
+    centre: DVec3<F>,
+    right: DVec3<F>,
+    up: DVec3<F>,
+    width: F,
+    height: F,
     rows: u16,
     cols: u16,
 }
 
-impl DCamera {
+impl<F: Real> DCamera<F> {
     /// The chapter's camera: the eye at the origin looking down −z, and a `w × h` screen at
     /// distance `z_p`, centred on `(0, 0, −z_p)`, with `rows × cols` pixels.
     ///
     /// `None` unless `w`, `h` and `z_p` are finite and positive and `rows`, `cols` non-zero.
     #[must_use]
-    pub fn pinhole(w: f64, h: f64, z_p: f64, rows: u16, cols: u16) -> Option<DCamera> {
-        let positive = |x: f64| x.is_finite() && x > 0.0;
+    pub fn pinhole(w: F, h: F, z_p: F, rows: u16, cols: u16) -> Option<Self> {
+        let positive = |x: F| x.is_finite() && x > F::ZERO;
         if !(positive(w) && positive(h) && positive(z_p)) || rows == 0 || cols == 0 {
             return None;
         }
-        let centre = DVec3::new(0.0, 0.0, -z_p);
+        let centre = DVec3::new(F::ZERO, F::ZERO, -z_p);
         let (right, up) = (DVec3::X, DVec3::Y);
         Some(DCamera {
             eye: DVec3::ZERO,
@@ -63,23 +63,23 @@ impl DCamera {
     /// is zero.
     #[must_use]
     pub fn look_at(
-        eye: DVec3,
-        target: DVec3,
-        up: DVec3,
-        fov_y_degrees: f64,
+        eye: DVec3<F>,
+        target: DVec3<F>,
+        up: DVec3<F>,
+        fov_y_degrees: F,
         cols: u16,
         rows: u16,
-    ) -> Option<DCamera> {
-        let fov_ok = fov_y_degrees > 0.0 && fov_y_degrees < 180.0;
+    ) -> Option<Self> {
+        let fov_ok = fov_y_degrees > F::ZERO && fov_y_degrees < F::from_f64(180.0);
         if !(eye.is_finite() && fov_ok) || rows == 0 || cols == 0 {
             return None;
         }
         let f = (target - eye).try_normalize()?;
         let right = f.cross(up).try_normalize()?;
         let u = right.cross(f);
-        let half_angle = fov_y_degrees.to_radians() / 2.0;
-        let height = 2.0 * libm::tan(half_angle);
-        let width = height * f64::from(cols) / f64::from(rows);
+        let half_angle = fov_y_degrees.to_radians() / F::TWO;
+        let height = F::TWO * half_angle.tan();
+        let width = height * F::from_u16(cols) / F::from_u16(rows);
         Some(DCamera {
             eye,
             centre: f,
@@ -109,7 +109,7 @@ impl DCamera {
     /// The eye: where every ray starts.
     #[inline]
     #[must_use]
-    pub const fn eye(&self) -> DVec3 {
+    pub const fn eye(&self) -> DVec3<F> {
         self.eye
     }
 
@@ -118,23 +118,24 @@ impl DCamera {
     ///
     /// Coordinates past the last row or column extrapolate the grid; they do not fail.
     #[must_use]
-    pub fn pixel_centre(&self, row: u16, col: u16) -> DVec3 {
+    pub fn pixel_centre(&self, row: u16, col: u16) -> DVec3<F> {
         self.eye + self.towards(row, col)
     }
 
     /// From the eye to the pixel centre of display pixel (`row`, `col`): the chapter's `p`.
-    fn towards(&self, row: u16, col: u16) -> DVec3 {
+    fn towards(&self, row: u16, col: u16) -> DVec3<F> {
         // Chapter row i counts up from the bottom; display rows count down from the top.
-        let i = f64::from(self.rows) - 1.0 - f64::from(row);
-        let j = f64::from(col);
-        let x = -self.width / 2.0 + self.width / f64::from(self.cols) * (j + 0.5);
-        let y = -self.height / 2.0 + self.height / f64::from(self.rows) * (i + 0.5);
+        let i = F::from_u16(self.rows) - F::ONE - F::from_u16(row);
+        let j = F::from_u16(col);
+        let half = F::from_f64(0.5);
+        let x = -self.width / F::TWO + self.width / F::from_u16(self.cols) * (j + half);
+        let y = -self.height / F::TWO + self.height / F::from_u16(self.rows) * (i + half);
         self.centre + self.right * x + self.up * y
     }
 
     /// The ray shot through the pixel centre of display pixel (`row`, `col`).
     #[must_use]
-    pub fn ray(&self, row: u16, col: u16) -> DRay {
+    pub fn ray(&self, row: u16, col: u16) -> DRay<F> {
         let p = self.towards(row, col);
         // The screen is never at the eye (its centre is a non-zero distance straight ahead),
         // so p has a direction.

@@ -1,6 +1,6 @@
-//! Colours while they are being summed: one `f64` a channel, 1.0 standing for 255.
+//! Colours while they are being summed: one float a channel, 1.0 standing for 255.
 
-use super::DVec3;
+use super::{DVec3, Real};
 use crate::{Background, Rgb};
 
 /// A colour in linear units: red, green, blue, each 1.0 for a channel of 255.
@@ -8,26 +8,26 @@ use crate::{Background, Rgb};
 /// Light adds up in these units (several lights, a highlight, a mirror image) and may pass
 /// 1.0 on the way; only the final pixel is clamped and rounded, by
 /// [`DScene::shade`](super::DScene::shade).
-pub type DColour = [f64; 3];
+pub type DColour<F = f64> = [F; 3];
 
 /// An 8-bit colour in linear units: `c/255`.
 #[must_use]
-pub(super) fn linear(c: Rgb) -> DColour {
-    [c.r, c.g, c.b].map(|c| f64::from(c) / 255.0)
+pub(super) fn linear<F: Real>(c: Rgb) -> DColour<F> {
+    [c.r, c.g, c.b].map(|c| F::from_u16(u16::from(c)) / F::from_f64(255.0))
 }
 
 /// The pixel for a summed colour: each channel `clamp(round(x·255), 0, 255)`, rounding half
 /// away from zero (which is half up for the non-negative values shading produces). NaN, which
 /// no valid scene produces, gives 0.
 #[must_use]
-pub(super) fn to_rgb(c: DColour) -> Rgb {
-    let channel = |x: f64| {
-        let x = libm::round(x * 255.0);
+pub(super) fn to_rgb<F: Real>(c: DColour<F>) -> Rgb {
+    let channel = |x: F| {
+        let x = (x * F::from_f64(255.0)).round();
         // Written as comparisons so that NaN, which fails both, becomes 0.
-        if x >= 255.0 {
+        if x >= F::from_f64(255.0) {
             255
-        } else if x > 0.0 {
-            x as u8
+        } else if x > F::ZERO {
+            x.to_u8()
         } else {
             0
         }
@@ -38,14 +38,14 @@ pub(super) fn to_rgb(c: DColour) -> Rgb {
 /// What a ray escaping along the unit direction `dir` sees: `bottom` straight down, `top`
 /// straight up, and in between `bottom + (top − bottom)·s` with `s = (dir.y + 1)/2`.
 #[must_use]
-pub(super) fn background(sky: &Background, dir: DVec3) -> DColour {
-    let s = (dir.y + 1.0) / 2.0;
-    let (bottom, top) = (linear(sky.bottom), linear(sky.top));
+pub(super) fn background<F: Real>(sky: &Background, dir: DVec3<F>) -> DColour<F> {
+    let s = (dir.y + F::ONE) / F::TWO;
+    let (bottom, top) = (linear::<F>(sky.bottom), linear::<F>(sky.top));
     [0, 1, 2].map(|i| bottom[i] + (top[i] - bottom[i]) * s)
 }
 
 /// `sum + weight·c`, channel by channel.
-pub(super) fn add_weighted(sum: &mut DColour, weight: f64, c: DColour) {
+pub(super) fn add_weighted<F: Real>(sum: &mut DColour<F>, weight: F, c: DColour<F>) {
     for (s, c) in sum.iter_mut().zip(c) {
         *s += weight * c;
     }
@@ -59,7 +59,7 @@ mod tests {
     fn every_channel_survives_the_round_trip() {
         for c in 0..=255u8 {
             let grey = Rgb::new(c, c, c);
-            assert_eq!(to_rgb(linear(grey)), grey);
+            assert_eq!(to_rgb(linear::<f64>(grey)), grey);
         }
     }
 
@@ -79,10 +79,13 @@ mod tests {
             top: Rgb::new(255, 0, 100),
             bottom: Rgb::new(55, 200, 100),
         };
-        assert_eq!(to_rgb(background(&sky, DVec3::Y)), sky.top);
-        assert_eq!(to_rgb(background(&sky, -DVec3::Y)), sky.bottom);
+        assert_eq!(to_rgb(background(&sky, <DVec3>::Y)), sky.top);
+        assert_eq!(to_rgb(background(&sky, -<DVec3>::Y)), sky.bottom);
         // Level rays see the mean: (255 + 55)/2 = 155, (0 + 200)/2 = 100.
-        assert_eq!(to_rgb(background(&sky, DVec3::X)), Rgb::new(155, 100, 100));
+        assert_eq!(
+            to_rgb(background(&sky, <DVec3>::X)),
+            Rgb::new(155, 100, 100)
+        );
         // 30° up: s = (0.5 + 1)/2 = 0.75, so red is 55 + 200·0.75 = 205.
         let up30 = DVec3::new(libm::sqrt(0.75), 0.5, 0.0);
         assert_eq!(to_rgb(background(&sky, up30)), Rgb::new(205, 50, 100));

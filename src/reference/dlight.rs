@@ -1,24 +1,24 @@
 //! [`DLight`]: a point light.
 
-use super::DVec3;
+use super::{DVec3, Real};
 
 /// A point light: where it is, and how strongly it lights a surface facing it squarely.
 ///
 /// An intensity of 1 lights a white matte surface facing it to full white; several lights add
 /// up. The fixed renderer accepts 0 to 4.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct DLight {
+pub struct DLight<F: Real = f64> {
     /// The light's position.
-    pub position: DVec3,
+    pub position: DVec3<F>,
     /// The light's strength, multiplying both the diffuse and the highlight terms.
-    pub intensity: f64,
+    pub intensity: F,
 }
 
-impl DLight {
+impl<F: Real> DLight<F> {
     /// A light at `position` with `intensity`.
     #[inline]
     #[must_use]
-    pub const fn new(position: DVec3, intensity: f64) -> Self {
+    pub const fn new(position: DVec3<F>, intensity: F) -> Self {
         DLight {
             position,
             intensity,
@@ -30,7 +30,7 @@ impl DLight {
     /// `None` when the light sits exactly on `point`, where `l` has no direction; such a light
     /// lights nothing there.
     #[must_use]
-    pub fn seen_from(&self, point: DVec3) -> Option<(DVec3, f64)> {
+    pub fn seen_from(&self, point: DVec3<F>) -> Option<(DVec3<F>, F)> {
         let to_light = self.position - point;
         Some((to_light.try_normalize()?, to_light.length()))
     }

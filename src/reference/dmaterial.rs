@@ -1,5 +1,6 @@
 //! [`DMaterial`] and [`DChecker`]: what a surface is made of, and a two-colour pattern.
 
+use super::Real;
 use crate::Rgb;
 
 /// How a surface answers light: Lambert diffuse, a white Blinn-Phong highlight and a mirror.
@@ -15,37 +16,37 @@ use crate::Rgb;
 /// and a mirror adds `reflect` times what the reflected ray sees (see
 /// [`DScene::radiance`](super::DScene::radiance)).
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct DMaterial {
+pub struct DMaterial<F: Real = f64> {
     /// The surface colour under full white light (the even squares of a checkerboard).
     pub colour: Rgb,
     /// Weight of the diffuse term.
-    pub diffuse: f64,
+    pub diffuse: F,
     /// Weight of the highlight, which is white: it adds to every channel alike.
-    pub specular: f64,
+    pub specular: F,
     /// The highlight's exponent: larger is smaller and sharper.
     pub shininess: u16,
     /// Share of the mirror image added, 0 for none.
-    pub reflect: f64,
+    pub reflect: F,
     /// A checkerboard replacing `colour` on a plane.
-    pub checker: Option<DChecker>,
+    pub checker: Option<DChecker<F>>,
 }
 
-impl DMaterial {
+impl<F: Real> DMaterial<F> {
     /// A matte surface: diffuse weight 1, no highlight, no mirror, no checkerboard.
     #[must_use]
     pub const fn matte(colour: Rgb) -> Self {
         DMaterial {
             colour,
-            diffuse: 1.0,
-            specular: 0.0,
+            diffuse: F::ONE,
+            specular: F::ZERO,
             shininess: 1,
-            reflect: 0.0,
+            reflect: F::ZERO,
             checker: None,
         }
     }
 }
 
-impl From<Rgb> for DMaterial {
+impl<F: Real> From<Rgb> for DMaterial<F> {
     fn from(colour: Rgb) -> Self {
         DMaterial::matte(colour)
     }
@@ -57,20 +58,20 @@ impl From<Rgb> for DMaterial {
 /// [`DPlane::coords`](super::DPlane::coords)): square `(⌊u/size⌋, ⌊v/size⌋)` shows the
 /// material's colour when the sum of the two indices is even, `other` when it is odd.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct DChecker {
+pub struct DChecker<F: Real = f64> {
     /// Side of a square, in world units; positive.
-    pub size: f64,
+    pub size: F,
     /// The colour of the odd squares.
     pub other: Rgb,
 }
 
-impl DChecker {
+impl<F: Real> DChecker<F> {
     /// The colour at plane coordinates `uv`, where the even squares are `even`.
     #[must_use]
-    pub fn colour_at(&self, even: Rgb, uv: [f64; 2]) -> Rgb {
-        let square = libm::floor(uv[0] / self.size) + libm::floor(uv[1] / self.size);
+    pub fn colour_at(&self, even: Rgb, uv: [F; 2]) -> Rgb {
+        let square = (uv[0] / self.size).floor() + (uv[1] / self.size).floor();
         // `fmod` keeps the sign: an odd negative sum gives −1, an even one ±0.
-        if libm::fmod(square, 2.0) == 0.0 {
+        if square.fmod(F::TWO) == F::ZERO {
             even
         } else {
             self.other

@@ -1,23 +1,23 @@
 //! [`DShape`] and [`DObject`]: what a scene is made of.
 
-use super::{DHit, DMaterial, DPlane, DRay, DSphere, DVec3};
+use super::{DHit, DMaterial, DPlane, DRay, DSphere, DVec3, Real};
 use crate::Rgb;
 
 /// One of the shapes a ray can be shot at.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub enum DShape {
+pub enum DShape<F: Real = f64> {
     /// A two-sided plane, infinite or cut to a rectangle.
-    Plane(DPlane),
+    Plane(DPlane<F>),
     /// A sphere.
-    Sphere(DSphere),
+    Sphere(DSphere<F>),
 }
 
-impl DShape {
+impl<F: Real> DShape<F> {
     /// Where `ray` first meets the shape, if it does within `0 ≤ t ≤ FAR`; the hit's `object`
     /// is 0.
     #[inline]
     #[must_use]
-    pub fn intersect(&self, ray: &DRay) -> Option<DHit> {
+    pub fn intersect(&self, ray: &DRay<F>) -> Option<DHit<F>> {
         match self {
             DShape::Plane(plane) => plane.intersect(ray),
             DShape::Sphere(sphere) => sphere.intersect(ray),
@@ -25,46 +25,46 @@ impl DShape {
     }
 }
 
-impl From<DPlane> for DShape {
-    fn from(plane: DPlane) -> DShape {
+impl<F: Real> From<DPlane<F>> for DShape<F> {
+    fn from(plane: DPlane<F>) -> Self {
         DShape::Plane(plane)
     }
 }
 
-impl From<DSphere> for DShape {
-    fn from(sphere: DSphere) -> DShape {
+impl<F: Real> From<DSphere<F>> for DShape<F> {
+    fn from(sphere: DSphere<F>) -> Self {
         DShape::Sphere(sphere)
     }
 }
 
 /// A shape and the material of its surface.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct DObject {
+pub struct DObject<F: Real = f64> {
     /// The geometry.
-    pub shape: DShape,
+    pub shape: DShape<F>,
     /// How the surface shades.
-    pub material: DMaterial,
+    pub material: DMaterial<F>,
 }
 
-impl DObject {
+impl<F: Real> DObject<F> {
     /// An object from its shape and material.
     #[inline]
     #[must_use]
-    pub const fn new(shape: DShape, material: DMaterial) -> Self {
+    pub const fn new(shape: DShape<F>, material: DMaterial<F>) -> Self {
         DObject { shape, material }
     }
 
     /// A matte object of one colour.
     #[inline]
     #[must_use]
-    pub const fn matte(shape: DShape, colour: Rgb) -> Self {
+    pub const fn matte(shape: DShape<F>, colour: Rgb) -> Self {
         DObject::new(shape, DMaterial::matte(colour))
     }
 
     /// The surface colour at `point`: the checkerboard's square there on a plane that has
     /// one, otherwise the material's colour (spheres ignore a checkerboard).
     #[must_use]
-    pub fn colour_at(&self, point: DVec3) -> Rgb {
+    pub fn colour_at(&self, point: DVec3<F>) -> Rgb {
         let colour = self.material.colour;
         match (self.shape, self.material.checker) {
             (DShape::Plane(plane), Some(checker)) => checker.colour_at(colour, plane.coords(point)),

@@ -1,6 +1,6 @@
 //! [`DPlane`]: a plane, or a rectangle of one, and the ray-plane intersection of Equation 4.2.
 
-use super::{DHit, DRay, DVec3, FAR};
+use super::{DHit, DRay, DVec3, FAR, Real};
 
 /// A plane through the point `p_0` with unit normal `n` (section 4.3), infinite or cut down
 /// to a rectangle.
@@ -12,21 +12,21 @@ use super::{DHit, DRay, DVec3, FAR};
 /// left when the axis `n` is closest to is dropped (see [`coords`](Self::coords)). A rectangle
 /// and a checkerboard are both given in them.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct DPlane {
-    point: DVec3,
-    normal: DVec3,
+pub struct DPlane<F: Real = f64> {
+    point: DVec3<F>,
+    normal: DVec3<F>,
     /// `[min, max]` in `(u, v)`, for a rectangle.
-    bounds: Option<[[f64; 2]; 2]>,
+    bounds: Option<[[F; 2]; 2]>,
 }
 
-impl DPlane {
+impl<F: Real> DPlane<F> {
     /// The plane through `point` perpendicular to `normal`, which is normalised here.
     ///
     /// Normalising in `f64` means a plane built from the fixed renderer's (nearly unit) Q16.16
     /// normal gets the exact unit normal in that direction. `None` if `normal` has no
     /// direction or `point` is not finite.
     #[must_use]
-    pub fn new(point: DVec3, normal: DVec3) -> Option<DPlane> {
+    pub fn new(point: DVec3<F>, normal: DVec3<F>) -> Option<Self> {
         if !point.is_finite() {
             return None;
         }
@@ -43,7 +43,7 @@ impl DPlane {
     ///
     /// `None` unless all four numbers are finite and `min` is below `max` on both axes.
     #[must_use]
-    pub fn bounded(self, min: [f64; 2], max: [f64; 2]) -> Option<DPlane> {
+    pub fn bounded(self, min: [F; 2], max: [F; 2]) -> Option<Self> {
         let finite = min.iter().chain(&max).all(|c| c.is_finite());
         if !finite || min[0] >= max[0] || min[1] >= max[1] {
             return None;
@@ -57,7 +57,7 @@ impl DPlane {
     /// The rectangle `[min, max]` in `(u, v)`, or `None` for an infinite plane.
     #[inline]
     #[must_use]
-    pub const fn bounds(&self) -> Option<[[f64; 2]; 2]> {
+    pub const fn bounds(&self) -> Option<[[F; 2]; 2]> {
         self.bounds
     }
 
@@ -73,12 +73,9 @@ impl DPlane {
     /// A tie goes to y, then z: a normal at 45° between y and x or z counts as a floor, one
     /// at 45° between z and x as a ±z wall.
     #[must_use]
-    pub fn coords(&self, x: DVec3) -> [f64; 2] {
-        let [ax, ay, az] = [
-            libm::fabs(self.normal.x),
-            libm::fabs(self.normal.y),
-            libm::fabs(self.normal.z),
-        ];
+    pub fn coords(&self, x: DVec3<F>) -> [F; 2] {
+        let n = self.normal;
+        let [ax, ay, az] = [n.x.abs(), n.y.abs(), n.z.abs()];
         if ay >= ax && ay >= az {
             [x.x, x.z]
         } else if az >= ax {
@@ -90,7 +87,7 @@ impl DPlane {
 
     /// True when `x`'s `(u, v)` lies in the rectangle, edges included; always for an infinite
     /// plane.
-    fn contains(&self, x: DVec3) -> bool {
+    fn contains(&self, x: DVec3<F>) -> bool {
         let Some([min, max]) = self.bounds else {
             return true;
         };
@@ -101,14 +98,14 @@ impl DPlane {
     /// The point `p_0` the plane was built through.
     #[inline]
     #[must_use]
-    pub const fn point(&self) -> DVec3 {
+    pub const fn point(&self) -> DVec3<F> {
         self.point
     }
 
     /// The unit normal `n`.
     #[inline]
     #[must_use]
-    pub const fn normal(&self) -> DVec3 {
+    pub const fn normal(&self) -> DVec3<F> {
         self.normal
     }
 
@@ -116,7 +113,7 @@ impl DPlane {
     /// points to, negative on the other, zero on the plane.
     #[inline]
     #[must_use]
-    pub fn distance(&self, x: DVec3) -> f64 {
+    pub fn distance(&self, x: DVec3<F>) -> F {
         self.normal.dot(x - self.point)
     }
 
@@ -127,13 +124,13 @@ impl DPlane {
     /// lies outside it. A ray starting on the plane hits it at `t = 0`. The hit's `object`
     /// is 0.
     #[must_use]
-    pub fn intersect(&self, ray: &DRay) -> Option<DHit> {
+    pub fn intersect(&self, ray: &DRay<F>) -> Option<DHit<F>> {
         let den = self.normal.dot(ray.dir());
-        if den == 0.0 {
+        if den == F::ZERO {
             return None;
         }
         let t = -self.distance(ray.origin()) / den;
-        if !(0.0..=FAR).contains(&t) {
+        if !(F::ZERO..=F::from_f64(FAR)).contains(&t) {
             return None;
         }
         let point = ray.at(t);
@@ -141,7 +138,11 @@ impl DPlane {
             return None;
         }
         // The ray travels against the normal that faces it: n if n·u_r < 0, else −n.
-        let normal = if den < 0.0 { self.normal } else { -self.normal };
+        let normal = if den < F::ZERO {
+            self.normal
+        } else {
+            -self.normal
+        };
         Some(DHit {
             t,
             point,
@@ -205,7 +206,7 @@ mod tests {
         let p = DPlane::new(DVec3::ZERO, DVec3::new(0.0, 2.0, 0.0)).unwrap();
         assert_eq!(p.normal(), DVec3::Y);
         assert_eq!(p.distance(DVec3::new(5.0, -3.0, 1.0)), -3.0);
-        assert_eq!(DPlane::new(DVec3::ZERO, DVec3::ZERO), None);
+        assert_eq!(DPlane::new(<DVec3>::ZERO, DVec3::ZERO), None);
     }
 
     #[test]

@@ -1,23 +1,23 @@
 //! [`DRay`]: the chapter's ray, Equation 4.1.
 
-use super::DVec3;
+use super::{DVec3, Real};
 
 /// A ray: an origination point `p_r` and a unit direction `u_r`.
 ///
 /// The points on the ray are `x(t) = p_r + t·u_r` for `t ≥ 0` (Equation 4.1). Because `u_r`
 /// is a unit vector, `t` is the distance from `p_r` to `x(t)`.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct DRay {
-    origin: DVec3,
-    dir: DVec3,
+pub struct DRay<F: Real = f64> {
+    origin: DVec3<F>,
+    dir: DVec3<F>,
 }
 
-impl DRay {
+impl<F: Real> DRay<F> {
     /// The ray from `origin` in the direction of `toward`, which is normalised here.
     ///
     /// `None` if `toward` has no direction (zero or not finite) or `origin` is not finite.
     #[must_use]
-    pub fn new(origin: DVec3, toward: DVec3) -> Option<DRay> {
+    pub fn new(origin: DVec3<F>, toward: DVec3<F>) -> Option<Self> {
         if !origin.is_finite() {
             return None;
         }
@@ -28,28 +28,28 @@ impl DRay {
     /// The ray from `origin` along `dir`, which the caller promises is a unit vector.
     #[inline]
     #[must_use]
-    pub const fn new_unchecked(origin: DVec3, dir: DVec3) -> DRay {
+    pub const fn new_unchecked(origin: DVec3<F>, dir: DVec3<F>) -> Self {
         DRay { origin, dir }
     }
 
     /// The origination point `p_r`.
     #[inline]
     #[must_use]
-    pub const fn origin(&self) -> DVec3 {
+    pub const fn origin(&self) -> DVec3<F> {
         self.origin
     }
 
     /// The unit direction `u_r`.
     #[inline]
     #[must_use]
-    pub const fn dir(&self) -> DVec3 {
+    pub const fn dir(&self) -> DVec3<F> {
         self.dir
     }
 
     /// The point `x(t) = p_r + t·u_r` at distance `t` along the ray (Equation 4.1).
     #[inline]
     #[must_use]
-    pub fn at(&self, t: f64) -> DVec3 {
+    pub fn at(&self, t: F) -> DVec3<F> {
         self.origin + self.dir * t
     }
 }
@@ -70,7 +70,7 @@ mod tests {
     fn the_direction_is_made_unit() {
         let ray = DRay::new(DVec3::ZERO, DVec3::new(0.0, 0.0, -7.0)).unwrap();
         assert_eq!(ray.dir(), -DVec3::Z);
-        assert_eq!(DRay::new(DVec3::ZERO, DVec3::ZERO), None);
+        assert_eq!(DRay::new(<DVec3>::ZERO, DVec3::ZERO), None);
         assert_eq!(
             DRay::new(DVec3::new(f64::INFINITY, 0.0, 0.0), DVec3::X),
             None

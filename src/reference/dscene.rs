@@ -1,6 +1,6 @@
 //! [`DScene`]: the objects, the lights, and the chapter's `shoot`.
 
-use super::{DHit, DLight, DObject, DRay};
+use super::{DHit, DLight, DObject, DRay, Real};
 use crate::{Background, Rgb};
 
 /// A scene of up to `N` objects and `L` point lights, with an ambient term, a background,
@@ -9,16 +9,16 @@ use crate::{Background, Rgb};
 /// Usually built from the fixed renderer's scene with [`DScene::from_scene`], so that both
 /// models draw the same thing. Shading is in [`DScene::radiance`].
 #[derive(Debug, Clone)]
-pub struct DScene<const N: usize, const L: usize = 4> {
-    objects: heapless::Vec<DObject, N>,
-    lights: heapless::Vec<DLight, L>,
-    ambient: f64,
+pub struct DScene<const N: usize, const L: usize = 4, F: Real = f64> {
+    objects: heapless::Vec<DObject<F>, N>,
+    lights: heapless::Vec<DLight<F>, L>,
+    ambient: F,
     background: Background,
     shadows: bool,
     depth: u8,
 }
 
-impl<const N: usize, const L: usize> DScene<N, L> {
+impl<const N: usize, const L: usize, F: Real> DScene<N, L, F> {
     /// Mirror bounces followed by a new scene, as in the fixed renderer.
     pub const DEFAULT_DEPTH: u8 = 4;
 
@@ -26,7 +26,7 @@ impl<const N: usize, const L: usize> DScene<N, L> {
     /// `ambient` until lights are added. Shadows are on and mirrors follow up to
     /// [`DEFAULT_DEPTH`](Self::DEFAULT_DEPTH) bounces.
     #[must_use]
-    pub const fn new(ambient: f64, background: Background) -> Self {
+    pub const fn new(ambient: F, background: Background) -> Self {
         DScene {
             objects: heapless::Vec::new(),
             lights: heapless::Vec::new(),
@@ -37,17 +37,14 @@ impl<const N: usize, const L: usize> DScene<N, L> {
         }
     }
 
-    /// Adds an object after those already in the scene; a full scene hands it back.
-    #[expect(
-        clippy::result_large_err,
-        reason = "like heapless::Vec::push, a full scene returns the object itself"
-    )]
-    pub fn push(&mut self, object: DObject) -> Result<(), DObject> {
+    /// Adds an object after those already in the scene; a full scene hands it back, like
+    /// `heapless::Vec::push`.
+    pub fn push(&mut self, object: DObject<F>) -> Result<(), DObject<F>> {
         self.objects.push(object)
     }
 
     /// Adds a light; a scene already holding `L` hands it back.
-    pub fn push_light(&mut self, light: DLight) -> Result<(), DLight> {
+    pub fn push_light(&mut self, light: DLight<F>) -> Result<(), DLight<F>> {
         self.lights.push(light)
     }
 
@@ -67,21 +64,21 @@ impl<const N: usize, const L: usize> DScene<N, L> {
     /// The objects, in the order they were added; a hit's `object` indexes this slice.
     #[inline]
     #[must_use]
-    pub fn objects(&self) -> &[DObject] {
+    pub fn objects(&self) -> &[DObject<F>] {
         &self.objects
     }
 
     /// The lights, in the order they were added.
     #[inline]
     #[must_use]
-    pub fn lights(&self) -> &[DLight] {
+    pub fn lights(&self) -> &[DLight<F>] {
         &self.lights
     }
 
     /// The ambient brightness every surface gets, lit or not.
     #[inline]
     #[must_use]
-    pub const fn ambient(&self) -> f64 {
+    pub const fn ambient(&self) -> F {
         self.ambient
     }
 
@@ -111,7 +108,7 @@ impl<const N: usize, const L: usize> DScene<N, L> {
     /// On a tie the object added earlier wins. The hit's `object` is the index of the object
     /// in [`objects`](Self::objects).
     #[must_use]
-    pub fn shoot(&self, ray: &DRay) -> Option<DHit> {
+    pub fn shoot(&self, ray: &DRay<F>) -> Option<DHit<F>> {
         self.shoot_past(ray, None)
     }
 
@@ -119,7 +116,7 @@ impl<const N: usize, const L: usize> DScene<N, L> {
     ///
     /// Planes and spheres are convex, so a ray leaving one outward cannot meet it again;
     /// leaving it out replaces nudging the origin off the surface.
-    pub(super) fn shoot_past(&self, ray: &DRay, skip: Option<usize>) -> Option<DHit> {
+    pub(super) fn shoot_past(&self, ray: &DRay<F>, skip: Option<usize>) -> Option<DHit<F>> {
         self.objects
             .iter()
             .enumerate()
@@ -132,7 +129,7 @@ impl<const N: usize, const L: usize> DScene<N, L> {
                 })
             })
             // `min_by` would keep the last of equals; the earlier object must win a tie.
-            .fold(None, |nearest: Option<DHit>, hit| match nearest {
+            .fold(None, |nearest: Option<DHit<F>>, hit| match nearest {
                 Some(best) if best.t <= hit.t => Some(best),
                 _ => Some(hit),
             })
@@ -141,14 +138,14 @@ impl<const N: usize, const L: usize> DScene<N, L> {
     /// The colour of the pixel whose ray is `ray` and whose first hit is `hit` (the result of
     /// [`shoot`](Self::shoot)): [`radiance`](Self::radiance), clamped and rounded to 8 bits.
     #[must_use]
-    pub fn shade(&self, ray: &DRay, hit: Option<&DHit>) -> Rgb {
+    pub fn shade(&self, ray: &DRay<F>, hit: Option<&DHit<F>>) -> Rgb {
         super::dcolour::to_rgb(self.radiance(ray, hit))
     }
 
     /// [`shoot`](Self::shoot) then [`shade`](Self::shade): the first hit, if any, and the
     /// pixel's colour.
     #[must_use]
-    pub fn trace(&self, ray: &DRay) -> (Option<DHit>, Rgb) {
+    pub fn trace(&self, ray: &DRay<F>) -> (Option<DHit<F>>, Rgb) {
         let hit = self.shoot(ray);
         let colour = self.shade(ray, hit.as_ref());
         (hit, colour)

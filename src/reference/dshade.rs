@@ -1,9 +1,9 @@
-//! Shading in `f64`: lights, shadows, highlights and mirrors, as [`DScene::radiance`].
+//! Shading in `f64` (or `f32`): lights, shadows, highlights and mirrors, as [`DScene::radiance`].
 
 use super::dcolour::{DColour, add_weighted, background, linear};
-use super::{DHit, DObject, DRay, DScene, DVec3};
+use super::{DHit, DObject, DRay, DScene, DVec3, Real};
 
-impl<const N: usize, const L: usize> DScene<N, L> {
+impl<const N: usize, const L: usize, F: Real> DScene<N, L, F> {
     /// The light arriving along `ray`, whose first hit is `hit`, in linear units (1.0 for a
     /// channel of 255), before clamping.
     ///
@@ -23,9 +23,9 @@ impl<const N: usize, const L: usize> DScene<N, L> {
     ///
     /// A hit whose `object` is not in the scene counts as a miss.
     #[must_use]
-    pub fn radiance(&self, ray: &DRay, hit: Option<&DHit>) -> DColour {
-        let mut sum = [0.0; 3];
-        let mut weight = 1.0;
+    pub fn radiance(&self, ray: &DRay<F>, hit: Option<&DHit<F>>) -> DColour<F> {
+        let mut sum = [F::ZERO; 3];
+        let mut weight = F::ONE;
         let mut dir = ray.dir();
         let mut hit = hit.copied();
         let mut bounce: u8 = 0;
@@ -38,11 +38,11 @@ impl<const N: usize, const L: usize> DScene<N, L> {
             let n = facing(h.normal, dir);
             add_weighted(&mut sum, weight, self.local(object, &h, n, dir));
             let reflect = object.material.reflect;
-            if reflect == 0.0 {
+            if reflect == F::ZERO {
                 return sum;
             }
             weight *= reflect;
-            dir = (dir - n * (2.0 * dir.dot(n)))
+            dir = (dir - n * (F::TWO * dir.dot(n)))
                 .try_normalize()
                 .unwrap_or(dir);
             if bounce == self.depth() {
@@ -62,15 +62,15 @@ impl<const N: usize, const L: usize> DScene<N, L> {
     /// summed over the lights in front of the surface (`n·l > 0`) and, with shadows on, not
     /// hidden by another object; `C` is the colour at the point (a checkerboard's square on a
     /// plane) and `h` the unit half vector of `l` and `−d`.
-    fn local(&self, object: &DObject, hit: &DHit, n: DVec3, d: DVec3) -> DColour {
+    fn local(&self, object: &DObject<F>, hit: &DHit<F>, n: DVec3<F>, d: DVec3<F>) -> DColour<F> {
         let material = &object.material;
-        let (mut diffuse, mut specular) = (0.0, 0.0);
+        let (mut diffuse, mut specular) = (F::ZERO, F::ZERO);
         for light in self.lights() {
             let Some((l, distance)) = light.seen_from(hit.point) else {
                 continue;
             };
             let cos = n.dot(l);
-            if cos <= 0.0 {
+            if cos <= F::ZERO {
                 continue;
             }
             if self.shadows()
@@ -79,21 +79,21 @@ impl<const N: usize, const L: usize> DScene<N, L> {
                 continue;
             }
             diffuse += light.intensity * cos;
-            if material.specular > 0.0
+            if material.specular > F::ZERO
                 && let Some(h) = (l - d).try_normalize()
             {
-                let s = libm::fmin(1.0, libm::fmax(0.0, n.dot(h)));
-                specular += light.intensity * libm::pow(s, f64::from(material.shininess));
+                let s = unit_clamp(n.dot(h));
+                specular += light.intensity * s.powi(material.shininess);
             }
         }
         let k = self.ambient() + material.diffuse * diffuse;
         let highlight = material.specular * specular;
-        linear(object.colour_at(hit.point)).map(|c| c * k + highlight)
+        linear::<F>(object.colour_at(hit.point)).map(|c| c * k + highlight)
     }
 
     /// Whether the shadow ray from object `from`'s surface towards a light `distance` away is
     /// stopped by another object short of the light.
-    fn blocked(&self, shadow: &DRay, distance: f64, from: usize) -> bool {
+    fn blocked(&self, shadow: &DRay<F>, distance: F, from: usize) -> bool {
         self.objects()
             .iter()
             .enumerate()
@@ -109,11 +109,22 @@ impl<const N: usize, const L: usize> DScene<N, L> {
 
 /// `normal`, or its opposite, whichever faces back along `dir`: a sphere seen from inside is
 /// lit on its inner side.
-fn facing(normal: DVec3, dir: DVec3) -> DVec3 {
-    if normal.dot(dir) <= 0.0 {
+fn facing<F: Real>(normal: DVec3<F>, dir: DVec3<F>) -> DVec3<F> {
+    if normal.dot(dir) <= F::ZERO {
         normal
     } else {
         -normal
+    }
+}
+
+/// `x` clamped to `[0, 1]`, NaN to 0: `fmin(1, fmax(0, x))`.
+fn unit_clamp<F: Real>(x: F) -> F {
+    if x > F::ONE {
+        F::ONE
+    } else if x > F::ZERO {
+        x
+    } else {
+        F::ZERO
     }
 }
 

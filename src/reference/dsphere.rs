@@ -1,21 +1,21 @@
 //! [`DSphere`]: a sphere and the two-step ray-sphere intersection of section 4.4.
 
-use super::{DHit, DRay, DVec3, FAR};
+use super::{DHit, DRay, DVec3, FAR, Real};
 
 /// A sphere with centre `c` and radius `r > 0`.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct DSphere {
-    centre: DVec3,
-    radius: f64,
+pub struct DSphere<F: Real = f64> {
+    centre: DVec3<F>,
+    radius: F,
 }
 
-impl DSphere {
+impl<F: Real> DSphere<F> {
     /// The sphere of `radius` about `centre`.
     ///
     /// `None` unless `radius` is finite and greater than zero and `centre` is finite.
     #[must_use]
-    pub fn new(centre: DVec3, radius: f64) -> Option<DSphere> {
-        if centre.is_finite() && radius.is_finite() && radius > 0.0 {
+    pub fn new(centre: DVec3<F>, radius: F) -> Option<Self> {
+        if centre.is_finite() && radius.is_finite() && radius > F::ZERO {
             Some(DSphere { centre, radius })
         } else {
             None
@@ -25,14 +25,14 @@ impl DSphere {
     /// The centre `c`.
     #[inline]
     #[must_use]
-    pub const fn centre(&self) -> DVec3 {
+    pub const fn centre(&self) -> DVec3<F> {
         self.centre
     }
 
     /// The radius `r`.
     #[inline]
     #[must_use]
-    pub const fn radius(&self) -> f64 {
+    pub const fn radius(&self) -> F {
         self.radius
     }
 
@@ -48,7 +48,7 @@ impl DSphere {
     /// the sphere (`d² = r²`) hits it once, at `x_close`. The hit normal `(x − c)/r` points
     /// outward, even when the ray starts inside. The hit's `object` is 0.
     #[must_use]
-    pub fn intersect(&self, ray: &DRay) -> Option<DHit> {
+    pub fn intersect(&self, ray: &DRay<F>) -> Option<DHit<F>> {
         let t_close = ray.dir().dot(self.centre - ray.origin());
         let x_close = ray.at(t_close);
         let d2 = (x_close - self.centre).length_squared();
@@ -56,12 +56,12 @@ impl DSphere {
         if d2 > r2 {
             return None;
         }
-        let a = libm::sqrt(r2 - d2);
+        let a = (r2 - d2).sqrt();
         let mut t = t_close - a;
-        if t < 0.0 {
+        if t < F::ZERO {
             t = t_close + a;
         }
-        if !(0.0..=FAR).contains(&t) {
+        if !(F::ZERO..=F::from_f64(FAR)).contains(&t) {
             return None;
         }
         let point = ray.at(t);

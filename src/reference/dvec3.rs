@@ -1,47 +1,49 @@
-//! [`DVec3`]: a point or direction in `f64`.
+//! [`DVec3`]: a point or direction in `f64` (or `f32`).
 
 use core::ops::{Add, Div, Mul, Neg, Sub};
 
-/// A point or a direction with three `f64` components, the reference twin of
-/// [`Vec3`](crate::Vec3).
+use super::Real;
+
+/// A point or a direction with three components, `f64` unless `F` says `f32`: the reference
+/// twin of [`Vec3`](crate::Vec3).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct DVec3 {
+pub struct DVec3<F: Real = f64> {
     /// x component.
-    pub x: f64,
+    pub x: F,
     /// y component.
-    pub y: f64,
+    pub y: F,
     /// z component.
-    pub z: f64,
+    pub z: F,
 }
 
-impl DVec3 {
+impl<F: Real> DVec3<F> {
     /// The zero vector.
-    pub const ZERO: DVec3 = DVec3::new(0.0, 0.0, 0.0);
+    pub const ZERO: Self = DVec3::new(F::ZERO, F::ZERO, F::ZERO);
     /// The unit vector along +x.
-    pub const X: DVec3 = DVec3::new(1.0, 0.0, 0.0);
+    pub const X: Self = DVec3::new(F::ONE, F::ZERO, F::ZERO);
     /// The unit vector along +y.
-    pub const Y: DVec3 = DVec3::new(0.0, 1.0, 0.0);
+    pub const Y: Self = DVec3::new(F::ZERO, F::ONE, F::ZERO);
     /// The unit vector along +z.
-    pub const Z: DVec3 = DVec3::new(0.0, 0.0, 1.0);
+    pub const Z: Self = DVec3::new(F::ZERO, F::ZERO, F::ONE);
 
     /// A vector from its three components.
     #[inline]
     #[must_use]
-    pub const fn new(x: f64, y: f64, z: f64) -> Self {
+    pub const fn new(x: F, y: F, z: F) -> Self {
         DVec3 { x, y, z }
     }
 
     /// The dot product `self · o`.
     #[inline]
     #[must_use]
-    pub const fn dot(self, o: DVec3) -> f64 {
+    pub fn dot(self, o: Self) -> F {
         self.x * o.x + self.y * o.y + self.z * o.z
     }
 
     /// The cross product `self × o` (right-handed: `X × Y = Z`).
     #[inline]
     #[must_use]
-    pub const fn cross(self, o: DVec3) -> DVec3 {
+    pub fn cross(self, o: Self) -> Self {
         DVec3::new(
             self.y * o.z - self.z * o.y,
             self.z * o.x - self.x * o.z,
@@ -52,22 +54,22 @@ impl DVec3 {
     /// `‖self‖²`.
     #[inline]
     #[must_use]
-    pub const fn length_squared(self) -> f64 {
+    pub fn length_squared(self) -> F {
         self.dot(self)
     }
 
     /// `‖self‖`.
     #[inline]
     #[must_use]
-    pub fn length(self) -> f64 {
-        libm::sqrt(self.length_squared())
+    pub fn length(self) -> F {
+        self.length_squared().sqrt()
     }
 
     /// The unit vector `self / ‖self‖`, or `None` if the length is zero or not finite.
     #[must_use]
-    pub fn try_normalize(self) -> Option<DVec3> {
+    pub fn try_normalize(self) -> Option<Self> {
         let len = self.length();
-        if len > 0.0 && len.is_finite() {
+        if len > F::ZERO && len.is_finite() {
             Some(self / len)
         } else {
             None
@@ -76,65 +78,63 @@ impl DVec3 {
 
     /// The unit vector along `self`, or the zero vector when there is none.
     #[must_use]
-    pub fn normalize_or_zero(self) -> DVec3 {
-        self.try_normalize().unwrap_or(DVec3::ZERO)
+    pub fn normalize_or_zero(self) -> Self {
+        self.try_normalize().unwrap_or(Self::ZERO)
     }
 
     /// True when all three components are finite.
     #[inline]
     #[must_use]
-    pub const fn is_finite(self) -> bool {
+    pub fn is_finite(self) -> bool {
         self.x.is_finite() && self.y.is_finite() && self.z.is_finite()
     }
 }
 
-impl From<crate::Vec3> for DVec3 {
-    /// The exact `f64` value of a Q16.16 vector (every Q16.16 number is an `f64`).
-    fn from(v: crate::Vec3) -> DVec3 {
-        DVec3::new(
-            v.x.to_num::<f64>(),
-            v.y.to_num::<f64>(),
-            v.z.to_num::<f64>(),
-        )
+impl<F: Real> From<crate::Vec3> for DVec3<F> {
+    /// The Q16.16 vector in `F`: exact in `f64` (every Q16.16 number is an `f64`), the
+    /// nearest `f32` in `f32`.
+    fn from(v: crate::Vec3) -> Self {
+        let f = |x: crate::Fx| F::from_f64(x.to_num::<f64>());
+        DVec3::new(f(v.x), f(v.y), f(v.z))
     }
 }
 
-impl Add for DVec3 {
-    type Output = DVec3;
+impl<F: Real> Add for DVec3<F> {
+    type Output = Self;
     #[inline]
-    fn add(self, o: DVec3) -> DVec3 {
+    fn add(self, o: Self) -> Self {
         DVec3::new(self.x + o.x, self.y + o.y, self.z + o.z)
     }
 }
 
-impl Sub for DVec3 {
-    type Output = DVec3;
+impl<F: Real> Sub for DVec3<F> {
+    type Output = Self;
     #[inline]
-    fn sub(self, o: DVec3) -> DVec3 {
+    fn sub(self, o: Self) -> Self {
         DVec3::new(self.x - o.x, self.y - o.y, self.z - o.z)
     }
 }
 
-impl Neg for DVec3 {
-    type Output = DVec3;
+impl<F: Real> Neg for DVec3<F> {
+    type Output = Self;
     #[inline]
-    fn neg(self) -> DVec3 {
+    fn neg(self) -> Self {
         DVec3::new(-self.x, -self.y, -self.z)
     }
 }
 
-impl Mul<f64> for DVec3 {
-    type Output = DVec3;
+impl<F: Real> Mul<F> for DVec3<F> {
+    type Output = Self;
     #[inline]
-    fn mul(self, k: f64) -> DVec3 {
+    fn mul(self, k: F) -> Self {
         DVec3::new(self.x * k, self.y * k, self.z * k)
     }
 }
 
-impl Div<f64> for DVec3 {
-    type Output = DVec3;
+impl<F: Real> Div<F> for DVec3<F> {
+    type Output = Self;
     #[inline]
-    fn div(self, k: f64) -> DVec3 {
+    fn div(self, k: F) -> Self {
         DVec3::new(self.x / k, self.y / k, self.z / k)
     }
 }
@@ -145,9 +145,9 @@ mod tests {
 
     #[test]
     fn cross_follows_the_right_hand_rule() {
-        assert_eq!(DVec3::X.cross(DVec3::Y), DVec3::Z);
-        assert_eq!(DVec3::Y.cross(DVec3::Z), DVec3::X);
-        assert_eq!(DVec3::Y.cross(DVec3::X), -DVec3::Z);
+        assert_eq!(<DVec3>::X.cross(DVec3::Y), DVec3::Z);
+        assert_eq!(<DVec3>::Y.cross(DVec3::Z), DVec3::X);
+        assert_eq!(<DVec3>::Y.cross(DVec3::X), -DVec3::Z);
     }
 
     #[test]
@@ -155,9 +155,9 @@ mod tests {
         let v = DVec3::new(3.0, 0.0, -4.0);
         assert_eq!(v.length(), 5.0);
         assert_eq!(v.try_normalize(), Some(DVec3::new(0.6, 0.0, -0.8)));
-        assert_eq!(DVec3::ZERO.try_normalize(), None);
+        assert_eq!(<DVec3>::ZERO.try_normalize(), None);
         assert_eq!(DVec3::new(f64::NAN, 0.0, 0.0).try_normalize(), None);
-        assert_eq!(DVec3::ZERO.normalize_or_zero(), DVec3::ZERO);
+        assert_eq!(<DVec3>::ZERO.normalize_or_zero(), DVec3::ZERO);
     }
 
     #[test]

@@ -1,26 +1,28 @@
 //! Building the reference scene from the fixed renderer's scene, so both draw the same thing.
 //!
 //! Every Q16.16 number is exactly an `f64`, so the reference starts from precisely the values
-//! the fixed renderer holds. The one change is that plane normals are normalised again in
+//! the fixed renderer holds (in `f32`, from the nearest `f32` to each: 24 bits hold any Q16.16
+//! number below 256 exactly). The one change is that plane normals are normalised again in
 //! `f64` (see [`DPlane::new`]); the fixed normal is unit only to within a few 2⁻¹⁶. Scaling
 //! all three components by one positive number keeps their order, so a plane's `(u, v)` axes
 //! ([`DPlane::coords`]) are the ones the fixed plane chose.
 
-use super::{DChecker, DLight, DMaterial, DObject, DPlane, DScene, DShape, DSphere, DVec3};
+use super::{DChecker, DLight, DMaterial, DObject, DPlane, DScene, DShape, DSphere, DVec3, Real};
 use crate::Fx;
 
-fn f(x: Fx) -> f64 {
-    x.to_num::<f64>()
+/// The Q16.16 number in `F`: exact in `f64`, the nearest `f32` in `f32`.
+fn f<F: Real>(x: Fx) -> F {
+    F::from_f64(x.to_num::<f64>())
 }
 
-impl From<crate::Light> for DLight {
-    fn from(light: crate::Light) -> DLight {
+impl<F: Real> From<crate::Light> for DLight<F> {
+    fn from(light: crate::Light) -> Self {
         DLight::new(light.position.into(), f(light.intensity))
     }
 }
 
-impl From<crate::Checker> for DChecker {
-    fn from(checker: crate::Checker) -> DChecker {
+impl<F: Real> From<crate::Checker> for DChecker<F> {
+    fn from(checker: crate::Checker) -> Self {
         DChecker {
             size: f(checker.size),
             other: checker.other,
@@ -28,8 +30,8 @@ impl From<crate::Checker> for DChecker {
     }
 }
 
-impl From<crate::Material> for DMaterial {
-    fn from(m: crate::Material) -> DMaterial {
+impl<F: Real> From<crate::Material> for DMaterial<F> {
+    fn from(m: crate::Material) -> Self {
         DMaterial {
             colour: m.colour,
             diffuse: f(m.diffuse),
@@ -41,11 +43,11 @@ impl From<crate::Material> for DMaterial {
     }
 }
 
-impl DShape {
+impl<F: Real> DShape<F> {
     /// The reference twin of a fixed shape, or `None` if it is degenerate in `f64` (a zero
     /// normal, empty bounds or a non-positive radius, which the fixed constructors refuse).
     #[must_use]
-    pub fn from_shape(shape: &crate::Shape) -> Option<DShape> {
+    pub fn from_shape(shape: &crate::Shape) -> Option<Self> {
         Some(match shape {
             crate::Shape::Plane(p) => {
                 let plane = DPlane::new(p.point().into(), p.normal().into())?;
@@ -62,10 +64,10 @@ impl DShape {
     }
 }
 
-impl DObject {
+impl<F: Real> DObject<F> {
     /// The reference twin of a fixed object: the same shape and material.
     #[must_use]
-    pub fn from_object(object: &crate::Object) -> Option<DObject> {
+    pub fn from_object(object: &crate::Object) -> Option<Self> {
         Some(DObject::new(
             DShape::from_shape(&object.shape)?,
             object.material.into(),
@@ -73,13 +75,13 @@ impl DObject {
     }
 }
 
-impl<const N: usize, const L: usize> DScene<N, L> {
+impl<const N: usize, const L: usize, F: Real> DScene<N, L, F> {
     /// The reference twin of a fixed scene: the same objects in the same order (so hit
     /// indices agree), the same lights, ambient, background, shadow switch and mirror depth.
     ///
     /// `None` if an object is degenerate in `f64`, which a validated fixed scene never has.
     #[must_use]
-    pub fn from_scene(scene: &crate::Scene<N, L>) -> Option<DScene<N, L>> {
+    pub fn from_scene(scene: &crate::Scene<N, L>) -> Option<Self> {
         let mut out = DScene::new(f(scene.ambient()), scene.background());
         out.set_shadows(scene.shadows());
         out.set_depth(scene.depth());
@@ -171,7 +173,7 @@ mod tests {
     #[test]
     fn the_demo_scene_converts() {
         let demo = crate::demo::scene();
-        let twin = DScene::from_scene(&demo).unwrap();
+        let twin: DScene<8> = DScene::from_scene(&demo).unwrap();
         assert_eq!(twin.objects().len(), demo.objects().len());
         assert_eq!(twin.lights().len(), demo.lights().len());
         assert_eq!(twin.shadows(), demo.shadows());

@@ -1,6 +1,6 @@
 //! [`render_row`] and [`render`]: the chapter's raycasting loop over every pixel.
 
-use super::{DCamera, DScene};
+use super::{DCamera, DScene, Real};
 use crate::Rgb;
 
 /// Shades display row `row` (0 is the top) into `out`, one colour per column, left to right.
@@ -12,9 +12,9 @@ use crate::Rgb;
 ///
 /// If `out.len()` is not `camera.cols()`: the reference is test machinery, and a buffer of
 /// the wrong size is a bug in the test.
-pub fn render_row<const N: usize, const L: usize>(
-    scene: &DScene<N, L>,
-    camera: &DCamera,
+pub fn render_row<const N: usize, const L: usize, F: Real>(
+    scene: &DScene<N, L, F>,
+    camera: &DCamera<F>,
     row: u16,
     out: &mut [Rgb],
 ) {
@@ -34,9 +34,9 @@ pub fn render_row<const N: usize, const L: usize>(
 /// # Panics
 ///
 /// If `out.len()` is not `camera.rows() · camera.cols()`.
-pub fn render<const N: usize, const L: usize>(
-    scene: &DScene<N, L>,
-    camera: &DCamera,
+pub fn render<const N: usize, const L: usize, F: Real>(
+    scene: &DScene<N, L, F>,
+    camera: &DCamera<F>,
     out: &mut [Rgb],
 ) {
     let cols = usize::from(camera.cols());

@@ -1,0 +1,191 @@
+//! What the firmware renders: the [`Variant`]s of the scene, and the [`Renderer`]s that draw
+//! them — fixray's Q16.16 renderer ([`Fixed`]) and its reference model in `f64` or `f32`
+//! ([`Reference`]).
+//!
+//! This file uses only `fixray`, so the host compiles it too: `examples/frame_hash.rs`
+//! includes it (`#[path]`) and hashes the very frames the chips render, built by the same
+//! code, for `scripts/firmware.sh` to compare.
+
+use core::fmt::Debug;
+
+use fixray::reference::{self, DCamera, DScene, DVec3, Real};
+use fixray::{Camera, Error, Fx, Material, Object, Rgb, Scene, demo};
+
+/// Columns of the frame.
+pub const COLS: u16 = 160;
+/// Rows of the frame.
+pub const ROWS: u16 = 128;
+
+/// A scene and its camera, as the figures table names them.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Variant {
+    /// `demo::scene()` (four matte spheres, a ground plane, one light, shadows) through
+    /// `demo::camera`, the chapter's pinhole camera.
+    Demo,
+    /// `demo::classic()` (highlights, three lights, shadows, mirrors, a checkerboard floor)
+    /// through `demo::classic_camera`, a look-at camera with a 60° field of view.
+    Classic,
+    /// The classic scene without shadow rays: what shadows cost.
+    ClassicNoShadow,
+    /// The classic scene with every material's `reflect` set to 0: what mirrors cost.
+    ///
+    /// Not `set_depth(0)`: at depth 0 a mirror still adds the sky along its mirror ray.
+    ClassicNoMirror,
+}
+
+impl Variant {
+    /// All of them.
+    pub const ALL: [Variant; 4] = [
+        Variant::Demo,
+        Variant::Classic,
+        Variant::ClassicNoShadow,
+        Variant::ClassicNoMirror,
+    ];
+
+    /// What follows the renderer's name in the table: `fixed-classic-noshadow`, say.
+    #[must_use]
+    pub const fn suffix(self) -> &'static str {
+        match self {
+            Variant::Demo => "",
+            Variant::Classic => "-classic",
+            Variant::ClassicNoShadow => "-classic-noshadow",
+            Variant::ClassicNoMirror => "-classic-nomirror",
+        }
+    }
+
+    /// The fixed-point scene.
+    pub fn scene(self) -> Result<Scene<8>, Error> {
+        Ok(match self {
+            Variant::Demo => demo::scene(),
+            Variant::Classic => demo::classic(),
+            Variant::ClassicNoShadow => {
+                let mut scene = demo::classic();
+                scene.set_shadows(false);
+                scene
+            }
+            Variant::ClassicNoMirror => without_mirrors(&demo::classic())?,
+        })
+    }
+
+    /// The fixed-point camera for a `cols × rows` frame.
+    pub fn camera(self, cols: u16, rows: u16) -> Result<Camera, Error> {
+        match self {
+            Variant::Demo => demo::camera(cols, rows),
+            _ => demo::classic_camera(cols, rows),
+        }
+    }
+
+    /// The same camera in the reference model, from the same `f32` constants, in `F`.
+    #[must_use]
+    pub fn dcamera<F: Real>(self, cols: u16, rows: u16) -> Option<DCamera<F>> {
+        let f = |x: f32| F::from_f64(f64::from(x));
+        match self {
+            Variant::Demo => {
+                let h = f(demo::SCREEN_HEIGHT);
+                let w = h * F::from_u16(cols) / F::from_u16(rows);
+                DCamera::pinhole(w, h, f(demo::SCREEN_DISTANCE), rows, cols)
+            }
+            _ => {
+                let fov = f(demo::CLASSIC_FOV_DEGREES);
+                DCamera::look_at(DVec3::ZERO, -DVec3::Z, DVec3::Y, fov, cols, rows)
+            }
+        }
+    }
+}
+
+/// `scene` with every material's mirror turned off, all else kept.
+///
+/// It holds two scenes at once. Never inlined, so that they take stack only while it runs,
+/// during the set-up, and not in the frame that renders.
+#[inline(never)]
+fn without_mirrors(scene: &Scene<8>) -> Result<Scene<8>, Error> {
+    let [first, others @ ..] = scene.lights() else {
+        unreachable!("a scene has at least one light");
+    };
+    let mut out = Scene::new(*first, scene.ambient(), scene.background())?;
+    for light in others {
+        out.add_light(*light)?;
+    }
+    out.set_shadows(scene.shadows());
+    out.set_depth(scene.depth());
+    for object in scene.objects() {
+        let material = Material {
+            reflect: Fx::ZERO,
+            ..object.material
+        };
+        out.add(Object {
+            material,
+            ..*object
+        })?;
+    }
+    Ok(out)
+}
+
+/// A renderer the firmware can measure: built for a scene, then asked for one row at a time,
+/// so a frame never has to fit in RAM.
+pub trait Renderer: Sized {
+    /// Its name in the report and the script's table, before the variant's suffix.
+    const NAME: &'static str;
+    /// Why it refused.
+    type Error: Debug;
+
+    /// Sets up `variant` for a `cols × rows` frame.
+    fn new(variant: Variant, cols: u16, rows: u16) -> Result<Self, Self::Error>;
+
+    /// Renders row `row` (0 at the top) into `out`, `cols` pixels long.
+    fn render_row(&self, row: u16, out: &mut [Rgb]) -> Result<(), Self::Error>;
+}
+
+/// fixray's Q16.16 renderer: integer arithmetic only.
+pub struct Fixed {
+    scene: Scene<8>,
+    camera: Camera,
+}
+
+impl Renderer for Fixed {
+    const NAME: &'static str = "fixed";
+    type Error = Error;
+
+    fn new(variant: Variant, cols: u16, rows: u16) -> Result<Self, Error> {
+        Ok(Fixed {
+            scene: variant.scene()?,
+            camera: variant.camera(cols, rows)?,
+        })
+    }
+
+    fn render_row(&self, row: u16, out: &mut [Rgb]) -> Result<(), Error> {
+        fixray::render_row(&self.scene, &self.camera, row, out)
+    }
+}
+
+/// fixray's reference model in `F`: `f64`, or `f32` as the float baseline. On the Cortex-M0
+/// and RV32IMC both are the compiler's soft-float routines; on the Cortex-M4F `f32` is the
+/// FPU's (but for `libm`'s `sqrtf`, `tanf`, `roundf`, `floorf`, `fmodf` and `powf`, which are
+/// software on every chip) and `f64` soft-float.
+pub struct Reference<F: Real> {
+    scene: DScene<8, 4, F>,
+    camera: DCamera<F>,
+}
+
+impl<F: Real> Renderer for Reference<F> {
+    // `Real` is `f64` or `f32` only: told apart by size.
+    const NAME: &'static str = if size_of::<F>() == size_of::<f64>() {
+        "reference-f64"
+    } else {
+        "reference-f32"
+    };
+    type Error = &'static str;
+
+    fn new(variant: Variant, cols: u16, rows: u16) -> Result<Self, Self::Error> {
+        let scene = variant.scene().map_err(|_| "the fixed scene was refused")?;
+        Ok(Reference {
+            scene: DScene::from_scene(&scene).ok_or("the scene has no reference twin")?,
+            camera: variant.dcamera(cols, rows).ok_or("a degenerate camera")?,
+        })
+    }
+
+    fn render_row(&self, row: u16, out: &mut [Rgb]) -> Result<(), Self::Error> {
+        reference::render_row(&self.scene, &self.camera, row, out);
+        Ok(())
+    }
+}
