@@ -303,6 +303,35 @@ impl Camera {
         self.right.cross(self.towards(row, 0)).try_normalize()
     }
 
+    /// The columns whose rays can meet a sphere of `radius` at `centre`, as a conservative
+    /// inclusive range (it may extend past the screen), or `None` when the sphere reaches
+    /// within 1/16 of the plane of the eye and no range is certain.
+    ///
+    /// With `x` the sphere centre's offset along `right` and `z` its depth along the view, a
+    /// point of the sphere is seen at `x'/z'`, which lies between `(x − r)/(z ∓ r)` and
+    /// `(x + r)/(z ∓ r)` (the denominator chosen by the numerator's sign); column `j` looks
+    /// along `(j + ½ − cols/2)/f`, with `f` the view distance in pixels. Two columns of margin
+    /// cover the rounding.
+    pub(crate) fn column_span(&self, centre: Vec3, radius: Fx) -> Option<(i16, i16)> {
+        let to_centre = centre - self.eye;
+        let view = self.forward.try_normalize()?;
+        let (x, z) = (self.right.dot(to_centre), view.dot(to_centre));
+        let (near, far) = (z - radius, z + radius);
+        if near < Fx::from_bits(1 << 12) {
+            return None;
+        }
+        let ratio = |num: Fx, den: Fx| ((num.to_bits() as i64) << 16) / den.to_bits() as i64;
+        let high = ratio(x + radius, if x + radius >= Fx::ZERO { near } else { far });
+        let low = ratio(x - radius, if x - radius >= Fx::ZERO { far } else { near });
+        let distance = self.forward.length().to_bits() as i64;
+        // f · ratio in whole pixels: Q16.16 × Q16.16 / 2³².
+        let column = |r: i64| {
+            let offset = (distance * r) >> 32;
+            (offset + self.cols as i64 / 2).clamp(-8, MAX_PIXELS as i64 + 8) as i16
+        };
+        Some((column(low) - 2, column(high) + 2))
+    }
+
     /// The ray through sample (`sx`, `sy`) of an `n × n` grid of sub-pixel centres in pixel
     /// (`row`, `col`), for supersampling: sample `(s, t)` sits at
     /// `(col + (2s + 1)/(2n), row + (2t + 1)/(2n))`. `n` is clamped to 1..=16; `n = 1` is

@@ -4,7 +4,7 @@ use crate::camera::Camera;
 use crate::color::Rgb;
 use crate::error::Error;
 use crate::framebuffer::Framebuffer;
-use crate::scene::Scene;
+use crate::scene::{Scene, Shape};
 
 /// Renders display row `row` (0 at the top) into `out`, one colour per column.
 ///
@@ -28,9 +28,31 @@ pub fn render_row<const N: usize, const L: usize>(
 ) -> Result<(), Error> {
     check_row(camera, row, out)?;
     let among = scene.seen_from_row(camera, row);
+    // The columns each sphere this row can meet may show up in; the rest of the row skips it.
+    let mut spans = [(0i16, 0i16); 64];
+    let mut bounded = 0u64;
+    for (index, object) in scene.objects().iter().enumerate().take(64) {
+        if among & (1 << index) != 0
+            && let Shape::Sphere(sphere) = object.shape
+            && let Some(span) = camera.column_span(sphere.centre(), sphere.radius())
+        {
+            spans[index] = span;
+            bounded |= 1 << index;
+        }
+    }
     for (col, pixel) in out.iter_mut().enumerate() {
+        let mut here = among;
+        let mut rest = bounded;
+        while rest != 0 {
+            let index = rest.trailing_zeros() as usize;
+            rest &= rest - 1;
+            let (first, last) = spans[index];
+            if (col as i16) < first || (col as i16) > last {
+                here &= !(1 << index);
+            }
+        }
         let ray = camera.ray(row, col as u16);
-        *pixel = scene.shade(&ray, scene.shoot_among(&ray, among).as_ref());
+        *pixel = scene.shade(&ray, scene.shoot_among(&ray, here).as_ref());
     }
     Ok(())
 }
