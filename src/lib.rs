@@ -91,7 +91,7 @@ pub use light::Light;
 pub use material::{Checker, Material};
 pub use plane::Plane;
 pub use ray::Ray;
-pub use render::{render, render_row, render_row_supersampled};
+pub use render::{render, render_row, render_row_supersampled, shoot_row};
 pub use scene::{Object, Scene, Shape};
 pub use sphere::Sphere;
 pub use vec3::Vec3;

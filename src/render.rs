@@ -4,6 +4,8 @@ use crate::camera::Camera;
 use crate::color::Rgb;
 use crate::error::Error;
 use crate::framebuffer::Framebuffer;
+use crate::hit::Hit;
+use crate::ray::Ray;
 use crate::scene::{Scene, Shape};
 
 /// Renders display row `row` (0 at the top) into `out`, one colour per column.
@@ -27,6 +29,38 @@ pub fn render_row<const N: usize, const L: usize>(
     out: &mut [Rgb],
 ) -> Result<(), Error> {
     check_row(camera, row, out)?;
+    shoot_row(scene, camera, row, |col, ray, hit| {
+        if let Some(pixel) = out.get_mut(col as usize) {
+            *pixel = scene.shade(ray, hit.as_ref());
+        }
+    });
+    Ok(())
+}
+
+/// Shoots the ray of every pixel of display row `row` into the scene, nearest hit first, and
+/// hands each to `each(col, ray, hit)` in column order: `render_row` without the shading.
+///
+/// A row of rays lies in one plane through the eye, and each sphere covers a span of columns,
+/// so the row is first culled: only the spheres whose span holds a pixel are tried for it
+/// ([`Scene::seen_from_row`] and [`Camera`]'s conservative screen span of a sphere). The hits
+/// are exactly those of [`Scene::shoot`].
+///
+/// ```
+/// use fixray::{demo, shoot_row};
+/// let (scene, camera) = (demo::scene(), demo::camera(40, 32).unwrap());
+/// let mut hits = 0;
+/// shoot_row(&scene, &camera, 31, |col, ray, hit| {
+///     assert_eq!(hit, scene.shoot(ray), "column {col}");
+///     hits += hit.is_some() as u32;
+/// });
+/// assert_eq!(hits, 40); // the bottom row sees the ground everywhere
+/// ```
+pub fn shoot_row<const N: usize, const L: usize>(
+    scene: &Scene<N, L>,
+    camera: &Camera,
+    row: u16,
+    mut each: impl FnMut(u16, &Ray, Option<Hit>),
+) {
     let among = scene.seen_from_row(camera, row);
     // The columns each sphere this row can meet may show up in; the rest of the row skips it.
     let mut spans = [(0i16, 0i16); 64];
@@ -40,7 +74,7 @@ pub fn render_row<const N: usize, const L: usize>(
             bounded |= 1 << index;
         }
     }
-    for (col, pixel) in out.iter_mut().enumerate() {
+    for col in 0..camera.cols() {
         let mut here = among;
         let mut rest = bounded;
         while rest != 0 {
@@ -51,10 +85,9 @@ pub fn render_row<const N: usize, const L: usize>(
                 here &= !(1 << index);
             }
         }
-        let ray = camera.ray(row, col as u16);
-        *pixel = scene.shade(&ray, scene.shoot_among(&ray, here).as_ref());
+        let ray = camera.ray(row, col);
+        each(col, &ray, scene.shoot_among(&ray, here));
     }
-    Ok(())
 }
 
 /// [`render_row`] with `n × n` supersampling: each pixel is the mean of `n²` rays through
