@@ -17,10 +17,12 @@
 mod renderer;
 
 use fixray::{FrameHash, Rgb};
-use renderer::{COLS, Fixed, ROWS, Reference, Renderer, Variant};
+use renderer::{COLS, Fixed, FixedRays, FixedShoot, ROWS, Reference, Renderer, Variant};
 
 fn main() {
     print_hashes::<Fixed>();
+    print_hashes::<FixedRays>();
+    print_hashes::<FixedShoot>();
     print_hashes::<Reference<f64>>();
     print_hashes::<Reference<f32>>();
 }

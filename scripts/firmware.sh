@@ -30,7 +30,8 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 firmware="$root/firmware"
 targets=(thumbv6m-none-eabi thumbv7em-none-eabihf riscv32imc-unknown-none-elf)
-bins=(fixed fixed_classic fixed_classic_noshadow fixed_classic_nomirror
+bins=(fixed fixed_noshadow fixed_shoot fixed_rays
+    fixed_classic fixed_classic_noshadow fixed_classic_nomirror
     reference reference_classic reference_f32 reference_f32_classic)
 
 # --- What it needs -------------------------------------------------------------------------

@@ -59,7 +59,7 @@ pub mod renderer;
 pub mod stack;
 
 pub use harness::run;
-pub use renderer::{COLS, Fixed, ROWS, Reference, Renderer, Variant};
+pub use renderer::{COLS, Fixed, FixedRays, FixedShoot, ROWS, Reference, Renderer, Variant};
 
 /// The entry point of a firmware binary: [`run`] with the renderer `$renderer` on the scene
 /// [`Variant`]`::$variant`, started by the board's start-up crate (`cortex-m-rt` or

@@ -25,6 +25,8 @@ pub enum Variant {
     /// `demo::classic()` (highlights, three lights, shadows, mirrors, a checkerboard floor)
     /// through `demo::classic_camera`, a look-at camera with a 60° field of view.
     Classic,
+    /// The demo scene without shadow rays: against `Demo`, what its shadows cost.
+    DemoNoShadow,
     /// The classic scene without shadow rays: what shadows cost.
     ClassicNoShadow,
     /// The classic scene with every material's `reflect` set to 0: what mirrors cost.
@@ -35,8 +37,9 @@ pub enum Variant {
 
 impl Variant {
     /// All of them.
-    pub const ALL: [Variant; 4] = [
+    pub const ALL: [Variant; 5] = [
         Variant::Demo,
+        Variant::DemoNoShadow,
         Variant::Classic,
         Variant::ClassicNoShadow,
         Variant::ClassicNoMirror,
@@ -47,6 +50,7 @@ impl Variant {
     pub const fn suffix(self) -> &'static str {
         match self {
             Variant::Demo => "",
+            Variant::DemoNoShadow => "-noshadow",
             Variant::Classic => "-classic",
             Variant::ClassicNoShadow => "-classic-noshadow",
             Variant::ClassicNoMirror => "-classic-nomirror",
@@ -57,6 +61,11 @@ impl Variant {
     pub fn scene(self) -> Result<Scene<8>, Error> {
         Ok(match self {
             Variant::Demo => demo::scene(),
+            Variant::DemoNoShadow => {
+                let mut scene = demo::scene();
+                scene.set_shadows(false);
+                scene
+            }
             Variant::Classic => demo::classic(),
             Variant::ClassicNoShadow => {
                 let mut scene = demo::classic();
@@ -70,7 +79,7 @@ impl Variant {
     /// The fixed-point camera for a `cols × rows` frame.
     pub fn camera(self, cols: u16, rows: u16) -> Result<Camera, Error> {
         match self {
-            Variant::Demo => demo::camera(cols, rows),
+            Variant::Demo | Variant::DemoNoShadow => demo::camera(cols, rows),
             _ => demo::classic_camera(cols, rows),
         }
     }
@@ -80,7 +89,7 @@ impl Variant {
     pub fn dcamera<F: Real>(self, cols: u16, rows: u16) -> Option<DCamera<F>> {
         let f = |x: f32| F::from_f64(f64::from(x));
         match self {
-            Variant::Demo => {
+            Variant::Demo | Variant::DemoNoShadow => {
                 let h = f(demo::SCREEN_HEIGHT);
                 let w = h * F::from_u16(cols) / F::from_u16(rows);
                 DCamera::pinhole(w, h, f(demo::SCREEN_DISTANCE), rows, cols)
@@ -155,6 +164,66 @@ impl Renderer for Fixed {
 
     fn render_row(&self, row: u16, out: &mut [Rgb]) -> Result<(), Error> {
         fixray::render_row(&self.scene, &self.camera, row, out)
+    }
+}
+
+/// The first stage of [`Fixed`] alone, for the profile: a ray through every pixel centre,
+/// written out as the bytes of its direction so that nothing is optimised away.
+pub struct FixedRays {
+    camera: Camera,
+}
+
+impl Renderer for FixedRays {
+    const NAME: &'static str = "fixed-rays";
+    type Error = Error;
+
+    fn new(variant: Variant, cols: u16, rows: u16) -> Result<Self, Error> {
+        Ok(FixedRays {
+            camera: variant.camera(cols, rows)?,
+        })
+    }
+
+    fn render_row(&self, row: u16, out: &mut [Rgb]) -> Result<(), Error> {
+        for (col, pixel) in (0..self.camera.cols()).zip(out.iter_mut()) {
+            let dir = self.camera.ray(row, col).dir;
+            *pixel = Rgb::new(
+                dir.x.to_bits() as u8,
+                dir.y.to_bits() as u8,
+                dir.z.to_bits() as u8,
+            );
+        }
+        Ok(())
+    }
+}
+
+/// The first two stages of [`Fixed`], for the profile: the rays and their nearest hits
+/// ([`fixray::shoot_row`], culling included), written out as the hit's object and distance.
+pub struct FixedShoot {
+    scene: Scene<8>,
+    camera: Camera,
+}
+
+impl Renderer for FixedShoot {
+    const NAME: &'static str = "fixed-shoot";
+    type Error = Error;
+
+    fn new(variant: Variant, cols: u16, rows: u16) -> Result<Self, Error> {
+        Ok(FixedShoot {
+            scene: variant.scene()?,
+            camera: variant.camera(cols, rows)?,
+        })
+    }
+
+    fn render_row(&self, row: u16, out: &mut [Rgb]) -> Result<(), Error> {
+        fixray::shoot_row(&self.scene, &self.camera, row, |col, _, hit| {
+            if let (Some(pixel), Some(hit)) = (out.get_mut(col as usize), hit) {
+                let t = hit.t.to_bits();
+                *pixel = Rgb::new(hit.object as u8, (t >> 8) as u8, t as u8);
+            } else if let Some(pixel) = out.get_mut(col as usize) {
+                *pixel = Rgb::BLACK;
+            }
+        });
+        Ok(())
     }
 }
 
