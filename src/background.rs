@@ -27,7 +27,7 @@ impl Background {
 
     /// The colour seen along the unit direction `dir`, in linear units (1 = 255).
     pub(crate) fn along(&self, dir: Vec3) -> Linear {
-        let s = (dir.y + Fx::ONE) / 2; // 0 straight down, 1 straight up
+        let s = (dir.y + Fx::ONE) >> 1; // 0 straight down, 1 straight up
         let mix = |b: u8, t: u8| {
             let (b, t) = (channel_to_linear(b), channel_to_linear(t));
             b + crate::fx::mul(t - b, s)

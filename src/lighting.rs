@@ -69,17 +69,21 @@ impl<const N: usize, const L: usize> Scene<N, L> {
             }
         }
         let k = self.ambient() + fx::mul(material.diffuse, diffuse);
-        let highlight = fx::mul(material.specular, specular);
+        let highlight = if specular > Fx::ZERO {
+            fx::mul(material.specular, specular)
+        } else {
+            Fx::ZERO
+        };
         let colour = object.colour_at(hit.point);
         let channel = |c: u8| fx::mul(channel_to_linear(c), k) + highlight;
         [channel(colour.r), channel(colour.g), channel(colour.b)]
     }
 }
 
-/// `sum += weight · c`.
+/// `sum += weight · c`; the first surface a ray meets has weight 1, and no product.
 fn add(sum: &mut Linear, weight: Fx, c: Linear) {
     for (s, c) in sum.iter_mut().zip(c) {
-        *s += fx::mul(weight, c);
+        *s += if weight == Fx::ONE { c } else { fx::mul(weight, c) };
     }
 }
 
