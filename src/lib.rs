@@ -53,6 +53,7 @@
 mod background;
 mod camera;
 mod color;
+mod cone;
 pub mod demo;
 mod divide;
 pub mod draw;

@@ -45,7 +45,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     fn local(&self, object: &Object, hit: &Hit, normal: Vec3, dir: Vec3) -> Linear {
         let material = &object.material;
         let (mut diffuse, mut specular) = (Fx::ZERO, Fx::ZERO);
-        for light in self.lights() {
+        for (index, light) in self.lights().iter().enumerate() {
             let to_light = light.position - hit.point;
             let Some(l) = to_light.try_normalize() else {
                 continue;
@@ -56,7 +56,8 @@ impl<const N: usize, const L: usize> Scene<N, L> {
             }
             if self.shadows() {
                 let shadow_ray = Ray::new_unchecked(hit.point, l);
-                if self.occluded(&shadow_ray, to_light.length_squared_wide(), hit.object) {
+                let distance_squared = to_light.length_squared_wide();
+                if self.occluded(&shadow_ray, distance_squared, hit.object, index) {
                     continue;
                 }
             }
@@ -83,7 +84,11 @@ impl<const N: usize, const L: usize> Scene<N, L> {
 /// `sum += weight · c`; the first surface a ray meets has weight 1, and no product.
 fn add(sum: &mut Linear, weight: Fx, c: Linear) {
     for (s, c) in sum.iter_mut().zip(c) {
-        *s += if weight == Fx::ONE { c } else { fx::mul(weight, c) };
+        *s += if weight == Fx::ONE {
+            c
+        } else {
+            fx::mul(weight, c)
+        };
     }
 }
 

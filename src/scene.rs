@@ -4,6 +4,7 @@ use heapless::Vec;
 
 use crate::background::Background;
 use crate::color::Rgb;
+use crate::cone::ShadowCone;
 use crate::error::Error;
 use crate::fx::Fx;
 use crate::hit::Hit;
@@ -94,6 +95,8 @@ impl Object {
 pub struct Scene<const N: usize, const L: usize = 4> {
     objects: Vec<Object, N>,
     lights: Vec<Light, L>,
+    /// `cones[light][object]`: what each light sees of each sphere, to skip shadow tests.
+    cones: [[ShadowCone; N]; L],
     ambient: Fx,
     background: Background,
     shadows: bool,
@@ -113,6 +116,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     ) -> Result<Self, Error> {
         let mut scene = Scene {
             objects: Vec::new(),
+            cones: [[ShadowCone::ALWAYS; N]; L],
             lights: Vec::new(),
             ambient: unit_interval(ambient, "ambient light")?,
             background: background.into(),
@@ -128,7 +132,11 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         self.objects
             .push(object)
             .map_err(|_| Error::CapacityExceeded { capacity: N })?;
-        Ok(self.objects.len() - 1)
+        let index = self.objects.len() - 1;
+        for (cones, light) in self.cones.iter_mut().zip(&self.lights) {
+            cones[index] = ShadowCone::new(light.position, &object.shape);
+        }
+        Ok(index)
     }
 
     /// Adds a sphere of a material (or a plain [`Rgb`], which is matte).
@@ -160,7 +168,11 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         self.lights
             .push(light)
             .map_err(|_| Error::CapacityExceeded { capacity: L })?;
-        Ok(self.lights.len() - 1)
+        let index = self.lights.len() - 1;
+        for (cone, object) in self.cones[index].iter_mut().zip(&self.objects) {
+            *cone = ShadowCone::new(light.position, &object.shape);
+        }
+        Ok(index)
     }
 
     /// Turns shadow rays on or off (on by default).
@@ -293,10 +305,21 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     }
 
     /// Whether anything but object `leaving` lies on `ray` closer than `√distance_squared`
-    /// (a Q32.32 value): a shadow ray, which stops at the first occluder.
-    pub(crate) fn occluded(&self, ray: &Ray, distance_squared: u64, leaving: usize) -> bool {
+    /// (a Q32.32 value): a shadow ray towards light `light`, which stops at the first
+    /// occluder and skips the spheres outside its [`ShadowCone`].
+    pub(crate) fn occluded(
+        &self,
+        ray: &Ray,
+        distance_squared: u64,
+        leaving: usize,
+        light: usize,
+    ) -> bool {
+        let cones = self.cones.get(light);
         self.objects.iter().enumerate().any(|(index, object)| {
             index != leaving
+                && cones
+                    .and_then(|c| c.get(index))
+                    .is_none_or(|cone| cone.may_block(ray.dir, distance_squared))
                 && object.shape.hit_distance(ray).is_some_and(|t| {
                     let t = t.to_bits() as u64;
                     t * t < distance_squared

@@ -58,3 +58,45 @@ fn ambient_outside_zero_to_one_is_refused() {
         })
     ));
 }
+
+#[test]
+fn shadow_cones_never_skip_an_occluder() {
+    // Shadow rays from points all over the classic scene's floor and spheres, towards each
+    // light: the cone-culled test must agree with the test that tries every object (light
+    // index out of range: no cones).
+    let scene = crate::demo::classic();
+    let mut seed = 0x1234_5678_9abc_def0u64;
+    let mut next = |range: f64| {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        Fx::from_num(((seed >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0) * range)
+    };
+    let mut blocked = 0;
+    for _ in 0..20_000 {
+        let point = Vec3::new(
+            next(12.0),
+            next(8.0) - Fx::from_num(2),
+            next(12.0) - Fx::from_num(18),
+        );
+        for (index, light) in scene.lights().iter().enumerate() {
+            let to_light = light.position - point;
+            let Some(l) = to_light.try_normalize() else {
+                continue;
+            };
+            let ray = Ray::new_unchecked(point, l);
+            let d2 = to_light.length_squared_wide();
+            let culled = scene.occluded(&ray, d2, usize::MAX, index);
+            assert_eq!(
+                culled,
+                scene.occluded(&ray, d2, usize::MAX, usize::MAX),
+                "{point:?} light {index}"
+            );
+            blocked += culled as u32;
+        }
+    }
+    assert!(
+        blocked > 1000,
+        "the sample must include shadowed points: {blocked}"
+    );
+}
