@@ -13,22 +13,25 @@ use crate::vec3::Vec3;
 /// is farther from the light than the sphere's near side (`D − r`). Both are tested with a
 /// dot product and a comparison, against the dozen products of a full ray–sphere test, and
 /// with margins far wider than the rounding, so a sphere that blocks is never skipped.
+///
+/// Twelve bytes a light and a sphere: the axis and `cos α` in Q2.14 are plenty for a test
+/// whose margin is 2⁻¹⁰.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) struct ShadowCone {
-    /// Unit vector from the light to the sphere's centre.
-    axis: Vec3,
-    /// `cos α`, less a margin; `Fx::MIN` for shapes that must always be tested.
-    cos: Fx,
-    /// `(D − r)²` less a margin, as a Q32.32 value.
-    near_squared: u64,
+    /// Unit vector from the light to the sphere's centre, Q2.14.
+    axis: [i16; 3],
+    /// `cos α` less a margin, Q2.14; `i16::MIN` for shapes that must always be tested.
+    cos: i16,
+    /// `D − r` less a margin.
+    near: Fx,
 }
 
 impl ShadowCone {
     /// Always test: planes, and spheres that hold or nearly touch the light.
     pub(crate) const ALWAYS: ShadowCone = ShadowCone {
-        axis: Vec3::ZERO,
-        cos: Fx::MIN,
-        near_squared: 0,
+        axis: [0; 3],
+        cos: i16::MIN,
+        near: Fx::ZERO,
     };
 
     /// 2⁻¹⁰: far wider than the few units of 2⁻¹⁶ that directions and lengths are off.
@@ -51,22 +54,29 @@ impl ShadowCone {
         let (d, r) = (distance.to_bits() as i64, radius.to_bits() as i64);
         let root = isqrt((d * d - r * r) as u64) as i64;
         let cos = Fx::from_bits(((root << 16) / d) as i32) - ShadowCone::MARGIN;
-        let near = distance - radius - ShadowCone::MARGIN;
+        let q14 = |c: Fx| (c.to_bits() >> 2) as i16; // |c| ≤ 1: fits Q2.14
         ShadowCone {
-            axis,
-            cos,
-            near_squared: (near.to_bits() as i64 * near.to_bits() as i64) as u64,
+            axis: [q14(axis.x), q14(axis.y), q14(axis.z)],
+            cos: q14(cos),
+            near: (distance - radius - ShadowCone::MARGIN).max(Fx::ZERO),
         }
     }
 
     /// Whether a shadow ray along the unit `dir` (towards the light), from a point
     /// `√distance_squared` from the light, may meet the sphere.
     pub(crate) fn may_block(&self, dir: Vec3, distance_squared: u64) -> bool {
-        if self.cos == Fx::MIN {
+        if self.cos == i16::MIN {
             return true;
         }
+        let near = self.near.to_bits() as i64;
+        if distance_squared <= (near * near) as u64 {
+            return false;
+        }
         // Seen from the light the ray leaves along −dir: inside the cone when −dir·axis ≥ cos.
-        distance_squared > self.near_squared && -dir.dot(self.axis) >= self.cos
+        // In Q4.28: three products of Q2.14 values, each below 2²⁹ in magnitude.
+        let c = |d: Fx, a: i16| (d.to_bits() >> 2) * a as i32;
+        let dot = c(dir.x, self.axis[0]) + c(dir.y, self.axis[1]) + c(dir.z, self.axis[2]);
+        -dot >= (self.cos as i32) << 14
     }
 }
 
