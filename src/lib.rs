@@ -39,11 +39,13 @@
 //! - numbers: [`Fx`], [`mul`], [`isqrt`], [`Vec3`]
 //! - geometry: [`Ray`], [`Plane`], [`Sphere`], [`Hit`]
 //! - viewing: [`Camera`]
-//! - the world: [`Scene`], [`Object`], [`Shape`], [`Light`], [`Rgb`]
-//! - output: [`render`], [`render_row`], [`Framebuffer`], [`FrameHash`]
+//! - the world: [`Scene`], [`Object`], [`Shape`], [`Material`], [`Checker`], [`Light`],
+//!   [`Background`], [`Rgb`]
+//! - output: [`render`], [`render_row`], [`render_row_supersampled`], [`shoot_row`],
+//!   [`Framebuffer`], [`FrameHash`]
 //! - [`draw`]: onto any `embedded-graphics` display, streamed band by band ([`Viewport`]),
 //!   in [`FromRgb`] colours with Bayer dithering for grey and one-bit displays
-//! - [`demo`]: the scene the examples, tests and firmware share
+//! - [`demo`]: the scenes the examples, tests and firmware share (demo and classic)
 //! - `reference` (feature `reference`): an independent f64 model of the same maths
 
 #![no_std]
