@@ -89,3 +89,34 @@ fn classic_scene_at_160_by_128_matches_the_reference() {
     assert!(a.same_object_percent() >= 99.5, "{a:?}");
     assert!(a.same_within_4_percent() >= 99.0, "{a:?}");
 }
+
+#[test]
+fn supersampled_rows_match_the_reference() {
+    // 2 × 2 supersampling of the demo scene at 80 × 64: the same sub-pixel rays in both
+    // models, the same averaging. Averaging four colours that are each within ±1 stays within
+    // ±1, except where a sample's object differs.
+    let scene = demo::scene();
+    let dscene = DScene::from_scene(&scene).unwrap();
+    let camera = demo::camera(80, 64).unwrap();
+    let dcamera = demo_dcamera(80, 64);
+    let (mut fixed, mut float) = (vec![fixray::Rgb::BLACK; 80], vec![fixray::Rgb::BLACK; 80]);
+    let (mut within_1, mut worst) = (0, 0u8);
+    for row in 0..64 {
+        fixray::render_row_supersampled(&scene, &camera, row, 2, &mut fixed).unwrap();
+        fixray::reference::render_row_supersampled(&dscene, &dcamera, row, 2, &mut float);
+        for (a, b) in fixed.iter().zip(&float) {
+            let d =
+                a.r.abs_diff(b.r)
+                    .max(a.g.abs_diff(b.g))
+                    .max(a.b.abs_diff(b.b));
+            within_1 += (d <= 1) as u32;
+            worst = worst.max(d);
+        }
+    }
+    eprintln!("2x2 supersampled demo 80x64: {within_1} of 5120 within ±1, worst {worst}");
+    assert!(
+        within_1 as f64 >= 0.999 * 5120.0,
+        "{within_1} of 5120 within ±1"
+    );
+    assert!(worst <= 2, "worst channel error {worst}");
+}

@@ -141,6 +141,24 @@ impl<F: Real> DCamera<F> {
         // so p has a direction.
         DRay::new_unchecked(self.eye, p.normalize_or_zero())
     }
+
+    /// The ray through sample (`sx`, `sy`) of an `n × n` grid of sub-pixel centres in pixel
+    /// (`row`, `col`), for supersampling: the sample sits `(2sx + 1)/(2n)` of a pixel right of
+    /// the pixel's left edge and `(2sy + 1)/(2n)` below its top edge. `n = 1` is the pixel
+    /// centre.
+    #[must_use]
+    pub fn sample_ray(&self, row: u16, col: u16, sx: u8, sy: u8, n: u8) -> DRay<F> {
+        let n = F::from_u16(u16::from(n.max(1)));
+        let offset = |s: u8| (F::TWO * F::from_u16(u16::from(s)) + F::ONE) / (F::TWO * n);
+        // Positions in pixels from the top left; the chapter's y grows upward.
+        let across = F::from_u16(col) + offset(sx);
+        let down = F::from_u16(row) + offset(sy);
+        let x = -self.width / F::TWO + self.width / F::from_u16(self.cols) * across;
+        let y = -self.height / F::TWO
+            + self.height / F::from_u16(self.rows) * (F::from_u16(self.rows) - down);
+        let p = self.centre + self.right * x + self.up * y;
+        DRay::new_unchecked(self.eye, p.normalize_or_zero())
+    }
 }
 
 #[cfg(test)]

@@ -87,7 +87,7 @@ pub use dscene::DScene;
 pub use dsphere::DSphere;
 pub use dvec3::DVec3;
 pub use real::Real;
-pub use render::{render, render_row};
+pub use render::{render, render_row, render_row_supersampled};
 
 /// The far clip: a hit farther along the ray than this is a miss, as in the fixed renderer.
 ///

@@ -28,6 +28,41 @@ pub fn render_row<const N: usize, const L: usize, F: Real>(
     }
 }
 
+/// [`render_row`] with `n × n` supersampling: each pixel is the mean of the `n²` colours seen
+/// through its sub-pixel samples ([`DCamera::sample_ray`]), each channel rounded half up.
+///
+/// # Panics
+///
+/// If `out` is not `camera.cols()` long.
+pub fn render_row_supersampled<const N: usize, const L: usize, F: Real>(
+    scene: &DScene<N, L, F>,
+    camera: &DCamera<F>,
+    row: u16,
+    n: u8,
+    out: &mut [Rgb],
+) {
+    assert_eq!(
+        out.len(),
+        usize::from(camera.cols()),
+        "row buffer length must equal cols"
+    );
+    let n = n.clamp(1, 16);
+    let count = u32::from(n) * u32::from(n);
+    for (col, pixel) in (0..camera.cols()).zip(out.iter_mut()) {
+        let mut sum = [0u32; 3];
+        for sy in 0..n {
+            for sx in 0..n {
+                let c = scene.trace(&camera.sample_ray(row, col, sx, sy, n)).1;
+                for (s, v) in sum.iter_mut().zip([c.r, c.g, c.b]) {
+                    *s += u32::from(v);
+                }
+            }
+        }
+        let mean = |s: u32| ((s + count / 2) / count) as u8;
+        *pixel = Rgb::new(mean(sum[0]), mean(sum[1]), mean(sum[2]));
+    }
+}
+
 /// Shades the whole picture into `out`, row-major with row 0 at the top: pixel (`row`, `col`)
 /// is `out[row · cols + col]`.
 ///
