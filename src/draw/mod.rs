@@ -28,22 +28,23 @@
 //! | --- | --- |
 //! | row buffer, `[Rgb; 320]` | 960 |
 //! | the [`Viewport`] (two references and a rectangle, 32-bit target) | 24 |
-//! | stack below [`Viewport::render`] on a Cortex-M0, deepest path | 680 |
-//! | **total** | **about 1.7 KB** |
+//! | stack below [`Viewport::render`] on a Cortex-M0, deepest path | about 1 200 |
+//! | **total** | **about 2.2 KB** |
 //!
-//! A framebuffer for the same display would take 230 400 bytes. The scene (`Scene<8>`, 284
-//! bytes) and camera (56 bytes) are the caller's, wherever it keeps them; a band of `k` rows
+//! A framebuffer for the same display would take 230 400 bytes. The scene (`Scene<8>`, about
+//! 1 KB with its shadow cones) and camera (56 bytes) are the caller's, wherever it keeps them; a band of `k` rows
 //! costs `960 · k` bytes and saves `k − 1` driver calls per band.
 //!
 //! The stack figure is measured, not estimated: a `Viewport::render` call for `Rgb565` and for
 //! `BinaryColor` into a display that consumes its pixels, built for `thumbv6m-none-eabi` with
 //! `opt-level = 3` and fat LTO, disassembled, and each function's frame (its `push` and
 //! `sub sp`) summed along the deepest call chain: render (128 or 144 bytes, the dithered
-//! format being the larger) → `render_row` (304) → `Vec3::try_normalize` (56) → integer square
-//! root (40) → the 64-bit division helpers (136). It is 656 to 672 bytes at `opt-level = "s"`.
-//! A real driver's `fill_contiguous` runs from the render's frame, beside `render_row` rather
-//! than below it, so it adds to the total only where it needs more than that branch's 536
-//! bytes. Nothing recurses.
+//! format being the larger) → `render_row` (784, of which 256 are the per-row table of sphere
+//! column spans that culling uses, the rest shading and shadows inlined) → a shape's
+//! `hit_distance` (120) → the integer square root (64) → the 64-bit helpers (under 140). A
+//! real driver's `fill_contiguous` runs from the render's frame, beside `render_row` rather
+//! than below it, so it adds to the total only where it needs more than that branch. Nothing
+//! recurses.
 
 mod color;
 mod dither;
