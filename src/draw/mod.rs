@@ -33,8 +33,7 @@
 //!
 //! A framebuffer for the same display would take 230 400 bytes. The scene (`Scene<8>`, about
 //! 1 KB with its shadow cones) and camera (56 bytes) are the caller's, wherever it keeps
-//! them; a band of `k` rows
-//! costs `960 · k` bytes and saves `k − 1` driver calls per band.
+//! them; a band of `k` rows costs `960 · k` bytes and saves `k − 1` driver calls per band.
 //!
 //! The stack figure is measured, not estimated: a `Viewport::render` call for `Rgb565` and for
 //! `BinaryColor` into a display that consumes its pixels, built for `thumbv6m-none-eabi` with
