@@ -39,12 +39,15 @@ pub(crate) const fn wide_mul(a: i32, b: i32) -> i64 {
 #[must_use]
 pub(crate) const fn narrow(wide: i64) -> Fx {
     let rounded = (wide + (1 << (FRAC - 1))) >> FRAC;
-    if rounded > i32::MAX as i64 {
-        Fx::MAX
-    } else if rounded < i32::MIN as i64 {
+    let low = rounded as i32;
+    // It fits when its high word is the sign extension of the low one: one comparison of
+    // 32-bit words, where two 64-bit comparisons would cost several instructions each.
+    if (rounded >> 32) as i32 == low >> 31 {
+        Fx::from_bits(low)
+    } else if rounded < 0 {
         Fx::MIN
     } else {
-        Fx::from_bits(rounded as i32)
+        Fx::MAX
     }
 }
 

@@ -50,7 +50,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
             let Some(l) = to_light.try_normalize() else {
                 continue;
             };
-            let cos = normal.dot(l);
+            let cos = normal.dot_exact(l);
             if cos <= Fx::ZERO {
                 continue;
             }
@@ -95,7 +95,7 @@ fn add(sum: &mut Linear, weight: Fx, c: Linear) {
 /// The normal turned to face against the ray, so that a sphere seen from inside and a plane
 /// seen from behind are lit on the side the ray is on.
 fn facing(normal: Vec3, dir: Vec3) -> Vec3 {
-    if normal.dot_wide(dir) > 0 {
+    if normal.dot_wide_exact(dir) > 0 {
         -normal
     } else {
         normal

@@ -153,8 +153,8 @@ impl Plane {
     #[must_use]
     pub fn hit_distance(&self, ray: &Ray) -> Option<Fx> {
         // Both are exact Q32.32 values.
-        let den = self.normal.dot_wide(ray.dir);
-        let num = -self.normal.dot_wide(ray.origin - self.point);
+        let den = self.normal.dot_wide_exact(ray.dir);
+        let num = -self.normal.dot_wide_exact(ray.origin - self.point);
         if den == 0 || (num != 0 && (num < 0) != (den < 0)) {
             return None; // parallel, or the plane is behind the origin
         }
@@ -177,7 +177,7 @@ impl Plane {
     /// The hit at distance `t` along `ray`, its normal facing the ray.
     #[must_use]
     pub fn hit_at(&self, ray: &Ray, t: Fx) -> Hit {
-        let normal = if self.normal.dot_wide(ray.dir) < 0 {
+        let normal = if self.normal.dot_wide_exact(ray.dir) < 0 {
             self.normal
         } else {
             -self.normal

@@ -286,15 +286,22 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     #[must_use]
     pub fn shoot_among(&self, ray: &Ray, among: u64) -> Option<Hit> {
         let mut nearest: Option<(Fx, usize)> = None;
-        for (index, object) in self.objects.iter().enumerate() {
-            if index < 64 && among & (1 << index) == 0 {
-                continue;
-            }
+        let mut try_object = |index: usize, object: &Object| {
             if let Some(t) = object.shape.hit_distance(ray)
                 && nearest.is_none_or(|(best, _)| t < best)
             {
                 nearest = Some((t, index));
             }
+        };
+        // Only the set bits, lowest first: culled objects cost nothing.
+        let mut rest = among & low_bits(self.objects.len());
+        while rest != 0 {
+            let index = rest.trailing_zeros() as usize;
+            rest &= rest - 1;
+            try_object(index, &self.objects[index]);
+        }
+        for (index, object) in self.objects.iter().enumerate().skip(64) {
+            try_object(index, object);
         }
         let (t, index) = nearest?;
         let hit = self.objects[index].shape.hit_at(ray, t);
@@ -339,6 +346,11 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     pub fn trace(&self, ray: &Ray) -> Rgb {
         self.shade(ray, self.shoot(ray).as_ref())
     }
+}
+
+/// A mask of the lowest `n` bits (all 64 for `n ≥ 64`).
+const fn low_bits(n: usize) -> u64 {
+    if n >= 64 { !0 } else { (1u64 << n) - 1 }
 }
 
 #[cfg(test)]

@@ -105,7 +105,7 @@ impl Sphere {
     #[must_use]
     pub fn hit_distance(&self, ray: &Ray) -> Option<Fx> {
         let to_centre = self.centre - ray.origin;
-        let t_close = ray.dir.dot(to_centre);
+        let t_close = ray.dir.dot_exact(to_centre);
         if t_close < -self.radius {
             return None; // wholly behind the origin
         }

@@ -108,6 +108,26 @@ impl Vec3 {
             .saturating_add(fx::wide_mul(self.z.to_bits(), o.z.to_bits()))
     }
 
+    /// The dot product as an exact Q32.32 value, for vectors inside the render path's
+    /// budget: components below 2¹⁴ in magnitude (raw values below 2³⁰), as hit points,
+    /// vectors to lights and unit vectors are. Each product is then below 2⁶⁰ and the sum
+    /// below 2⁶², so plain addition cannot overflow and needs none of [`Vec3::dot_wide`]'s
+    /// saturation checks.
+    #[inline]
+    #[must_use]
+    pub(crate) const fn dot_wide_exact(self, o: Vec3) -> i64 {
+        fx::wide_mul(self.x.to_bits(), o.x.to_bits())
+            + fx::wide_mul(self.y.to_bits(), o.y.to_bits())
+            + fx::wide_mul(self.z.to_bits(), o.z.to_bits())
+    }
+
+    /// [`Vec3::dot_wide_exact`] rounded once to Q16.16.
+    #[inline]
+    #[must_use]
+    pub(crate) const fn dot_exact(self, o: Vec3) -> Fx {
+        fx::narrow(self.dot_wide_exact(o))
+    }
+
     /// The dot product, formed at 64 bits and rounded once to Q16.16 (saturating).
     #[inline]
     #[must_use]
@@ -139,7 +159,8 @@ impl Vec3 {
     #[must_use]
     pub const fn length_squared_wide(self) -> u64 {
         const fn sq(c: Fx) -> u64 {
-            (c.to_bits() as i64).unsigned_abs().pow(2)
+            // A square of an i32 is at most 2⁶², so the signed 32 × 32 → 64 product holds it.
+            fx::wide_mul(c.to_bits(), c.to_bits()) as u64
         }
         sq(self.x) + sq(self.y) + sq(self.z)
     }
