@@ -1,5 +1,6 @@
 //! Division by a reciprocal: the quotient of two 64-bit values without a 64-bit division.
 
+use crate::fx::wide_mul_u32;
 /// `1/δ` for `δ = (128 + i + ½)/256`, `i` in 0..128, in Q1.15: the seed of the Newton steps.
 const SEEDS: [u16; 128] = {
     let mut seeds = [0u16; 128];
@@ -31,9 +32,9 @@ pub(crate) fn div_q16(num: u64, den: u64) -> u32 {
     };
     let mut y = (SEEDS[((d >> 24) - 128) as usize] as u32) << 15; // 1/δ in Q2.30
     for _ in 0..2 {
-        let dy = ((d as u64 * y as u64) >> 32) as u32; // δ·y, near 1, in Q2.30
+        let dy = (wide_mul_u32(d, y) >> 32) as u32; // δ·y, near 1, in Q2.30
         let factor = (2u32 << 30).wrapping_sub(dy); // 2 − δ·y, near 1, in Q2.30
-        y = ((y as u64 * factor as u64) >> 30) as u32;
+        y = (wide_mul_u32(y, factor) >> 30) as u32;
     }
     // num ≈ n · 2^k with n its top 32 bits.
     let num_bits = 64 - num.leading_zeros();
@@ -41,7 +42,7 @@ pub(crate) fn div_q16(num: u64, den: u64) -> u32 {
     let n = (num >> k) as u32;
     // num·2¹⁶/den = n · 2^k · 2¹⁶ · y · 2⁻³⁰ / 2^den_bits
     let shift = 14 + den_bits - k;
-    let q = n as u64 * y as u64;
+    let q = wide_mul_u32(n, y);
     if shift >= 64 {
         return 0;
     }

@@ -31,7 +31,61 @@ pub(crate) const FRAC: u32 = 16;
 #[inline]
 #[must_use]
 pub(crate) const fn wide_mul(a: i32, b: i32) -> i64 {
-    a as i64 * b as i64
+    #[cfg(all(target_arch = "arm", not(target_has_atomic = "32")))]
+    {
+        split_mul(a, b)
+    }
+    #[cfg(not(all(target_arch = "arm", not(target_has_atomic = "32"))))]
+    {
+        a as i64 * b as i64
+    }
+}
+
+/// `a · b` for unsigned 32-bit values, exact in 64 bits, by the cheapest means the chip has
+/// (see [`wide_mul`]).
+#[inline]
+#[must_use]
+pub(crate) const fn wide_mul_u32(a: u32, b: u32) -> u64 {
+    #[cfg(all(target_arch = "arm", not(target_has_atomic = "32")))]
+    {
+        split_mul_u32(a, b)
+    }
+    #[cfg(not(all(target_arch = "arm", not(target_has_atomic = "32"))))]
+    {
+        a as u64 * b as u64
+    }
+}
+
+/// [`wide_mul`] for ARMv6-M (Cortex-M0/M0+), which multiplies 32 × 32 → 32 only: there the
+/// compiler's 64-bit product is a call to a full 64 × 64 multiply. (ARMv6-M is told apart
+/// from the Arm cores that have `smull` by its lack of 32-bit atomics: rustc exposes no
+/// target feature for the long multiply.) Four 16-bit partial
+/// products are exact in 32 bits (`|a_hi · b_lo| < 2³¹`, since `|a_hi| ≤ 2¹⁵` and
+/// `b_lo < 2¹⁶`). Compiled everywhere, so the host tests check it.
+#[cfg_attr(
+    not(all(target_arch = "arm", not(target_has_atomic = "32"))),
+    allow(dead_code)
+)]
+#[inline]
+const fn split_mul(a: i32, b: i32) -> i64 {
+    let (a_lo, a_hi) = (a & 0xFFFF, a >> 16);
+    let (b_lo, b_hi) = (b & 0xFFFF, b >> 16);
+    let low = (a_lo as u32 * b_lo as u32) as i64;
+    let middle = (a_hi * b_lo) as i64 + (a_lo * b_hi) as i64;
+    (((a_hi * b_hi) as i64) << 32) + (middle << 16) + low
+}
+
+/// [`wide_mul_u32`] by four 16-bit partial products; see [`split_mul`].
+#[cfg_attr(
+    not(all(target_arch = "arm", not(target_has_atomic = "32"))),
+    allow(dead_code)
+)]
+#[inline]
+const fn split_mul_u32(a: u32, b: u32) -> u64 {
+    let (a_lo, a_hi) = (a & 0xFFFF, a >> 16);
+    let (b_lo, b_hi) = (b & 0xFFFF, b >> 16);
+    let middle = (a_hi * b_lo) as u64 + (a_lo * b_hi) as u64;
+    (((a_hi * b_hi) as u64) << 32) + (middle << 16) + (a_lo * b_lo) as u64
 }
 
 /// A Q32.32 raw value rounded (half up) back to Q16.16, saturating at the ends of the range.
@@ -114,6 +168,26 @@ mod tests {
         let a = Fx::from_bits(3);
         assert_eq!(mul(a, Fx::from_num(0.5)).to_bits(), 2);
         assert_eq!(mul(Fx::from_num(-2.5), Fx::from_num(4)), Fx::from_num(-10));
+    }
+
+    #[test]
+    fn split_products_are_exact() {
+        let edges = [0, 1, -1, 0xFFFF, -0xFFFF, 0x1_0000, -0x1_0000, i32::MAX, i32::MIN];
+        let mut seed = 0x0123_4567_89ab_cdefu64;
+        let mut values = edges.to_vec();
+        for _ in 0..300 {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            values.push((seed as i32) >> (seed >> 59)); // every magnitude
+        }
+        for &a in &values {
+            for &b in &values {
+                assert_eq!(split_mul(a, b), a as i64 * b as i64, "{a} × {b}");
+                let (ua, ub) = (a as u32, b as u32);
+                assert_eq!(split_mul_u32(ua, ub), ua as u64 * ub as u64, "{ua} × {ub}");
+            }
+        }
     }
 
     #[test]

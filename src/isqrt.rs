@@ -1,5 +1,6 @@
 //! The exact integer square root, kept in one place so that it can be swapped by measurement.
 
+use crate::fx::wide_mul_u32;
 use crate::rsqrt::rsqrt;
 
 /// `floor(sqrt(x))` for every `u64`, exactly.
@@ -34,7 +35,7 @@ pub fn isqrt(x: u64) -> u64 {
     } else {
         (x as u32) << (32 - p)
     };
-    let mut r = (m as u64 * y as u64) >> (62 - half);
+    let mut r = wide_mul_u32(m, y) >> (62 - half);
     while r.checked_mul(r).is_none_or(|square| square > x) {
         r -= 1;
     }

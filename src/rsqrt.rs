@@ -5,6 +5,7 @@
 //! [`rsqrt`] finds `1/√s` by table and Newton steps in 32-bit fixed point instead, and a
 //! vector is normalised with three multiplications.
 
+use crate::fx::wide_mul_u32;
 /// `1/√μ` for `μ = (64 + i + ½)/256`, `i` in 0..192, in Q2.14: the seed of the Newton steps.
 ///
 /// Built at compile time from an integer square root, so there is no float anywhere.
@@ -38,10 +39,10 @@ pub(crate) fn rsqrt(s: u64) -> (u32, u32) {
     let seed = SEEDS[((m >> 24) - 64) as usize] as u32;
     let mut y = seed << 16; // Q2.30
     for _ in 0..2 {
-        let y2 = ((y as u64 * y as u64) >> 30) as u32; // Q2.30, ≤ 4.1 · 2³⁰ fits
-        let my2 = ((m as u64 * y2 as u64) >> 32) as u32; // μ·y², near 1 in Q2.30
+        let y2 = (wide_mul_u32(y, y) >> 30) as u32; // Q2.30, ≤ 4.1 · 2³⁰ fits
+        let my2 = (wide_mul_u32(m, y2) >> 32) as u32; // μ·y², near 1 in Q2.30
         let factor = (3u32 << 30).wrapping_sub(my2); // 3 − μ·y², near 2, in Q2.30
-        y = ((y as u64 * factor as u64) >> 31) as u32;
+        y = (wide_mul_u32(y, factor) >> 31) as u32;
     }
     (y.min(i32::MAX as u32), p / 2)
 }

@@ -201,7 +201,7 @@ impl Vec3 {
         let shift = 14 + shift;
         let scale = |c: Fx| {
             // |c| ≤ 2³¹ and y < 2³¹: the product fits i64.
-            let p = c.to_bits() as i64 * y as i64;
+            let p = fx::wide_mul(c.to_bits(), y as i32);
             Fx::from_bits(((p + (1 << (shift - 1))) >> shift) as i32)
         };
         Some(Vec3::new(scale(self.x), scale(self.y), scale(self.z)))
