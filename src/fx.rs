@@ -172,7 +172,17 @@ mod tests {
 
     #[test]
     fn split_products_are_exact() {
-        let edges = [0, 1, -1, 0xFFFF, -0xFFFF, 0x1_0000, -0x1_0000, i32::MAX, i32::MIN];
+        let edges = [
+            0,
+            1,
+            -1,
+            0xFFFF,
+            -0xFFFF,
+            0x1_0000,
+            -0x1_0000,
+            i32::MAX,
+            i32::MIN,
+        ];
         let mut seed = 0x0123_4567_89ab_cdefu64;
         let mut values = edges.to_vec();
         for _ in 0..300 {
