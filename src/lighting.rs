@@ -61,22 +61,27 @@ impl<const N: usize, const L: usize> Scene<N, L> {
                     continue;
                 }
             }
-            diffuse += fx::mul(light.intensity, cos);
+            diffuse = diffuse.saturating_add(fx::mul(light.intensity, cos));
             if material.specular > Fx::ZERO
                 && let Some(half) = (l - dir).try_normalize()
             {
                 let s = normal.dot(half).max(Fx::ZERO).min(Fx::ONE);
-                specular += fx::mul(light.intensity, powi(s, material.shininess));
+                specular =
+                    specular.saturating_add(fx::mul(light.intensity, powi(s, material.shininess)));
             }
         }
-        let k = self.ambient() + fx::mul(material.diffuse, diffuse);
+        // Materials and lights have public fields, so weights outside their checked ranges can
+        // reach here: the sums saturate rather than wrap.
+        let k = self
+            .ambient()
+            .saturating_add(fx::mul(material.diffuse, diffuse));
         let highlight = if specular > Fx::ZERO {
             fx::mul(material.specular, specular)
         } else {
             Fx::ZERO
         };
         let colour = object.colour_at(hit.point);
-        let channel = |c: u8| fx::mul(channel_to_linear(c), k) + highlight;
+        let channel = |c: u8| fx::mul(channel_to_linear(c), k).saturating_add(highlight);
         [channel(colour.r), channel(colour.g), channel(colour.b)]
     }
 }
@@ -84,11 +89,11 @@ impl<const N: usize, const L: usize> Scene<N, L> {
 /// `sum += weight · c`; the first surface a ray meets has weight 1, and no product.
 fn add(sum: &mut Linear, weight: Fx, c: Linear) {
     for (s, c) in sum.iter_mut().zip(c) {
-        *s += if weight == Fx::ONE {
+        *s = s.saturating_add(if weight == Fx::ONE {
             c
         } else {
             fx::mul(weight, c)
-        };
+        });
     }
 }
 

@@ -123,7 +123,11 @@ impl Checker {
     /// The colour of the square at plane coordinates `uv`.
     #[must_use]
     pub fn colour_at(&self, even: Rgb, uv: [Fx; 2]) -> Rgb {
+        // `size` is a public field: a square of no size is one colour, not a division by zero.
         let size = self.size.to_bits() as i64;
+        if size <= 0 {
+            return even;
+        }
         let index = |c: Fx| (c.to_bits() as i64).div_euclid(size);
         if (index(uv[0]) + index(uv[1])) & 1 == 0 {
             even

@@ -309,3 +309,38 @@ fn culling_spheres_per_row_changes_no_pixel() {
         }
     }
 }
+
+#[test]
+fn materials_and_lights_built_by_hand_out_of_range_do_not_panic() {
+    // Material, Checker and Light have public fields, so a caller can skip their checked
+    // constructors: huge weights saturate to white, a checker of no size is one colour.
+    let light = Light {
+        position: v(0.0, 100.0, 0.0),
+        intensity: Fx::MAX,
+    };
+    let mut scene: Scene<2, 4> = Scene::new(light, Fx::ONE, SKY).unwrap();
+    scene.add_light(light).unwrap();
+    let wild = Material {
+        colour: Rgb::new(10, 20, 30),
+        diffuse: Fx::MAX,
+        specular: Fx::MAX,
+        shininess: 0,
+        reflect: Fx::MAX,
+        checker: Some(fixray::Checker {
+            size: Fx::ZERO,
+            other: Rgb::BLACK,
+        }),
+    };
+    scene
+        .add_plane(Plane::new(Vec3::ZERO, Vec3::Y).unwrap(), wild)
+        .unwrap();
+    scene
+        .add_sphere(Sphere::new(v(0.0, 2.0, -5.0), fx(1.0)).unwrap(), wild)
+        .unwrap();
+    let camera = Camera::pinhole(2.0, 2.0, 1.0, 8, 8).unwrap();
+    let mut row = [Rgb::BLACK; 8];
+    for y in 0..8 {
+        render_row(&scene, &camera, y, &mut row).unwrap();
+    }
+    assert_eq!(row[4], Rgb::WHITE, "the floor saturates");
+}
