@@ -6,7 +6,7 @@
 //! ```
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use fixray::reference::{self, DCamera, DScene};
+use fixray::reference::{self, DScene};
 use fixray::{Framebuffer, Rgb, demo, render};
 use std::hint::black_box;
 
@@ -17,15 +17,7 @@ fn frame(c: &mut Criterion) {
     let scene = demo::scene();
     let camera = demo::camera(W, H).unwrap();
     let dscene = DScene::from_scene(&scene).unwrap();
-    let h = demo::SCREEN_HEIGHT as f64;
-    let dcamera = DCamera::pinhole(
-        h * W as f64 / H as f64,
-        h,
-        demo::SCREEN_DISTANCE as f64,
-        H,
-        W,
-    )
-    .unwrap();
+    let dcamera = reference::demo_camera::<f64>(W, H).unwrap();
 
     let mut group = c.benchmark_group("demo 160x128 frame");
     let mut fixed = Box::new(Framebuffer::<{ W as usize }, { H as usize }>::new());

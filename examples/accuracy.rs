@@ -12,7 +12,7 @@
 //! hit the same object. The difference image shows the classic scene at 160 × 128, black
 //! where the renderers agree exactly and brighter where they differ (|Δ| × 32 per channel).
 
-use fixray::reference::{Accuracy, DCamera, DScene, DVec3};
+use fixray::reference::{Accuracy, DCamera, DScene, classic_camera, demo_camera};
 use fixray::{Camera, Error, Scene, demo};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
@@ -24,29 +24,13 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let demo_scene = demo::scene();
     for (cols, rows) in [(160u16, 128u16), (320, 240), (80, 64), (128, 64)] {
         let camera = demo::camera(cols, rows)?;
-        let h = demo::SCREEN_HEIGHT as f64;
-        let dcamera = DCamera::pinhole(
-            h * cols as f64 / rows as f64,
-            h,
-            demo::SCREEN_DISTANCE as f64,
-            rows,
-            cols,
-        )
-        .ok_or("demo camera")?;
+        let dcamera = demo_camera(cols, rows).ok_or("demo camera")?;
         row("demo (pinhole)", &demo_scene, &camera, &dcamera, None)?;
     }
     let classic = demo::classic();
     for (cols, rows) in [(160u16, 128u16), (320, 240)] {
         let camera = demo::classic_camera(cols, rows)?;
-        let dcamera = DCamera::look_at(
-            DVec3::ZERO,
-            -DVec3::Z,
-            DVec3::Y,
-            demo::CLASSIC_FOV_DEGREES as f64,
-            cols,
-            rows,
-        )
-        .ok_or("classic camera")?;
+        let dcamera = classic_camera(cols, rows).ok_or("classic camera")?;
         let path = diff.as_deref().filter(|_| cols == 160);
         row("classic (look-at)", &classic, &camera, &dcamera, path)?;
     }

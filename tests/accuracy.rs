@@ -7,15 +7,7 @@ use fixray::reference::{Accuracy, DCamera, DScene, DVec3};
 use fixray::{Camera, demo};
 
 fn demo_dcamera(cols: u16, rows: u16) -> DCamera {
-    let h = demo::SCREEN_HEIGHT as f64;
-    DCamera::pinhole(
-        h * cols as f64 / rows as f64,
-        h,
-        demo::SCREEN_DISTANCE as f64,
-        rows,
-        cols,
-    )
-    .unwrap()
+    fixray::reference::demo_camera(cols, rows).unwrap()
 }
 
 fn check(name: &str, a: &Accuracy) {
@@ -83,7 +75,7 @@ fn classic_scene_at_160_by_128_matches_the_reference() {
     let scene = demo::classic();
     let dscene = DScene::from_scene(&scene).unwrap();
     let camera = demo::classic_camera(160, 128).unwrap();
-    let dcamera = DCamera::look_at(DVec3::ZERO, -DVec3::Z, DVec3::Y, 60.0, 160, 128).unwrap();
+    let dcamera = fixray::reference::classic_camera(160, 128).unwrap();
     let a = Accuracy::measure(&scene, &camera, &dscene, &dcamera);
     eprintln!("classic 160x128: {a:?}");
     assert!(a.same_object_percent() >= 99.5, "{a:?}");

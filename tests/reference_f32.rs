@@ -109,16 +109,12 @@ fn channel_difference(a: Rgb, b: Rgb) -> u8 {
 
 /// The demo camera in precision `F`, from the same `f32` constants as the fixed one.
 fn demo_camera<F: Real>() -> DCamera<F> {
-    let f = |x: f32| F::from_f64(f64::from(x));
-    let h = f(demo::SCREEN_HEIGHT);
-    let w = h * F::from_u16(COLS) / F::from_u16(ROWS);
-    DCamera::pinhole(w, h, f(demo::SCREEN_DISTANCE), ROWS, COLS).unwrap()
+    fixray::reference::demo_camera(COLS, ROWS).unwrap()
 }
 
 /// The classic camera in precision `F`.
 fn classic_camera<F: Real>() -> DCamera<F> {
-    let fov = F::from_f64(f64::from(demo::CLASSIC_FOV_DEGREES));
-    DCamera::look_at(DVec3::ZERO, -DVec3::Z, DVec3::Y, fov, COLS, ROWS).unwrap()
+    fixray::reference::classic_camera(COLS, ROWS).unwrap()
 }
 
 fn check(name: &str, d: &Difference) {

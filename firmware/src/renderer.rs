@@ -8,7 +8,7 @@
 
 use core::fmt::Debug;
 
-use fixray::reference::{self, DCamera, DScene, DVec3, Real};
+use fixray::reference::{self, DCamera, DScene, Real};
 use fixray::{Camera, Error, Fx, Material, Object, Rgb, Scene, demo};
 
 /// Columns of the frame.
@@ -87,17 +87,9 @@ impl Variant {
     /// The same camera in the reference model, from the same `f32` constants, in `F`.
     #[must_use]
     pub fn dcamera<F: Real>(self, cols: u16, rows: u16) -> Option<DCamera<F>> {
-        let f = |x: f32| F::from_f64(f64::from(x));
         match self {
-            Variant::Demo | Variant::DemoNoShadow => {
-                let h = f(demo::SCREEN_HEIGHT);
-                let w = h * F::from_u16(cols) / F::from_u16(rows);
-                DCamera::pinhole(w, h, f(demo::SCREEN_DISTANCE), rows, cols)
-            }
-            _ => {
-                let fov = f(demo::CLASSIC_FOV_DEGREES);
-                DCamera::look_at(DVec3::ZERO, -DVec3::Z, DVec3::Y, fov, cols, rows)
-            }
+            Variant::Demo | Variant::DemoNoShadow => reference::demo_camera(cols, rows),
+            _ => reference::classic_camera(cols, rows),
         }
     }
 }

@@ -34,16 +34,14 @@
 //! models compare directly.
 //!
 //! ```
-//! use fixray::reference::{render, DCamera, DScene};
+//! use fixray::reference::{demo_camera, render, DScene};
 //! use fixray::{demo, Rgb};
 //!
 //! // The demo scene and camera, in both models.
 //! let scene = demo::scene();
 //! let camera = demo::camera(8, 6)?;
 //! let twin = DScene::from_scene(&scene).unwrap();
-//! let h = f64::from(demo::SCREEN_HEIGHT);
-//! let z_p = f64::from(demo::SCREEN_DISTANCE);
-//! let twin_camera = DCamera::pinhole(h * 8.0 / 6.0, h, z_p, 6, 8).unwrap();
+//! let twin_camera = demo_camera::<f64>(8, 6).unwrap();
 //!
 //! let mut frame = [Rgb::BLACK; 6 * 8];
 //! render(&twin, &twin_camera, &mut frame);
@@ -60,6 +58,7 @@
 mod accuracy;
 mod dcamera;
 mod dcolour;
+mod demo;
 mod dhit;
 mod dlight;
 mod dmaterial;
@@ -77,6 +76,7 @@ mod render;
 pub use accuracy::Accuracy;
 pub use dcamera::DCamera;
 pub use dcolour::DColour;
+pub use demo::{classic_camera, demo_camera};
 pub use dhit::DHit;
 pub use dlight::DLight;
 pub use dmaterial::{DChecker, DMaterial};
