@@ -14,16 +14,16 @@ use crate::vec3::Vec3;
 /// dot product and a comparison, against the dozen products of a full ray–sphere test, and
 /// with margins far wider than the rounding, so a sphere that blocks is never skipped.
 ///
-/// Twelve bytes a light and a sphere: the axis and `cos α` in Q2.14 are plenty for a test
-/// whose margin is 2⁻¹⁰.
+/// Sixteen bytes a light and a sphere: the axis and `cos α` in Q2.14 are plenty for a test
+/// whose margin is 2⁻¹⁰, and the near distance is kept squared, as the test wants it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) struct ShadowCone {
     /// Unit vector from the light to the sphere's centre, Q2.14.
     axis: [i16; 3],
     /// `cos α` less a margin, Q2.14; `i16::MIN` for shapes that must always be tested.
     cos: i16,
-    /// `D − r` less a margin.
-    near: Fx,
+    /// `(D − r)²` with a margin taken off `D − r`, in Q32.32 like a squared length.
+    near_squared: u64,
 }
 
 impl ShadowCone {
@@ -31,7 +31,7 @@ impl ShadowCone {
     pub(crate) const ALWAYS: ShadowCone = ShadowCone {
         axis: [0; 3],
         cos: i16::MIN,
-        near: Fx::ZERO,
+        near_squared: 0,
     };
 
     /// 2⁻¹⁰: far wider than the few units of 2⁻¹⁶ that directions and lengths are off.
@@ -58,7 +58,10 @@ impl ShadowCone {
         ShadowCone {
             axis: [q14(axis.x), q14(axis.y), q14(axis.z)],
             cos: q14(cos),
-            near: (distance - radius - ShadowCone::MARGIN).max(Fx::ZERO),
+            near_squared: {
+                let near = (distance - radius - ShadowCone::MARGIN).max(Fx::ZERO);
+                near.to_bits() as u64 * near.to_bits() as u64
+            },
         }
     }
 
@@ -68,8 +71,7 @@ impl ShadowCone {
         if self.cos == i16::MIN {
             return true;
         }
-        let near = self.near.to_bits() as i64;
-        if distance_squared <= (near * near) as u64 {
+        if distance_squared <= self.near_squared {
             return false;
         }
         // Seen from the light the ray leaves along −dir: inside the cone when −dir·axis ≥ cos.

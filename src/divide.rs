@@ -1,6 +1,6 @@
 //! Division by a reciprocal: the quotient of two 64-bit values without a 64-bit division.
 
-use crate::fx::wide_mul_u32;
+use crate::fx::{bit_length, shr_to_u32, wide_mul_u32};
 /// `1/δ` for `δ = (128 + i + ½)/256`, `i` in 0..128, in Q1.15: the seed of the Newton steps.
 const SEEDS: [u16; 128] = {
     let mut seeds = [0u16; 128];
@@ -24,9 +24,9 @@ pub(crate) fn div_q16(num: u64, den: u64) -> u32 {
     if num == 0 {
         return 0;
     }
-    let den_bits = 64 - den.leading_zeros(); // den < 2^den_bits
+    let den_bits = bit_length(den); // den < 2^den_bits
     let d = if den_bits >= 32 {
-        (den >> (den_bits - 32)) as u32
+        shr_to_u32(den, den_bits - 32)
     } else {
         (den as u32) << (32 - den_bits)
     };
@@ -37,14 +37,19 @@ pub(crate) fn div_q16(num: u64, den: u64) -> u32 {
         y = (wide_mul_u32(y, factor) >> 30) as u32;
     }
     // num ≈ n · 2^k with n its top 32 bits.
-    let num_bits = 64 - num.leading_zeros();
+    let num_bits = bit_length(num);
     let k = num_bits.saturating_sub(32);
-    let n = (num >> k) as u32;
+    let n = shr_to_u32(num, k);
     // num·2¹⁶/den = n · 2^k · 2¹⁶ · y · 2⁻³⁰ / 2^den_bits
     let shift = 14 + den_bits - k;
     let q = wide_mul_u32(n, y);
     if shift >= 64 {
         return 0;
+    }
+    if shift >= 33 {
+        // 2^(shift−1) is a whole multiple of 2³²: round on the high word alone (see
+        // `fx::mul_shift_round`). q < 2⁶², so the sum cannot overflow.
+        return (((q >> 32) as u32) + (1 << (shift - 33))) >> (shift - 32);
     }
     ((q + (1 << (shift - 1))) >> shift) as u32
 }

@@ -88,6 +88,98 @@ const fn split_mul_u32(a: u32, b: u32) -> u64 {
     (((a_hi * b_hi) as u64) << 32) + (middle << 16) + (a_lo * b_lo) as u64
 }
 
+/// `(a · b) / 2^shift` rounded half up, for `1 ≤ shift ≤ 63`: the scaling step of
+/// normalisation and of the sphere's normal, exact.
+///
+/// Render-path shifts are 33 or more, and then only the product's high word matters:
+/// `2^(shift−1)` is a whole multiple of 2³², so adding it and dropping `shift` bits gives the
+/// same as taking the high word, adding `2^(shift−33)` and dropping `shift − 32` bits — 32-bit
+/// operations where a 64-bit shift by a variable amount is a library call on Cortex-M0.
+#[inline]
+#[must_use]
+pub(crate) const fn mul_shift_round(a: i32, b: i32, shift: u32) -> i64 {
+    let wide = wide_mul(a, b);
+    if shift >= 33 {
+        // |high| ≤ 2³⁰, and so is the rounding term: the sum fits.
+        let high = (wide >> 32) as i32;
+        ((high + (1 << (shift - 33))) >> (shift - 32)) as i64
+    } else {
+        (wide + (1 << (shift - 1))) >> shift
+    }
+}
+
+/// `x >> k` for `k ≤ 32` where the caller knows the result fits 32 bits (`x < 2^(32 + k)`),
+/// with 32-bit shifts only.
+#[inline]
+#[must_use]
+pub(crate) const fn shr_to_u32(x: u64, k: u32) -> u32 {
+    let (high, low) = ((x >> 32) as u32, x as u32);
+    if k == 0 {
+        low
+    } else if k >= 32 {
+        high >> (k - 32)
+    } else {
+        (high << (32 - k)) | (low >> k)
+    }
+}
+
+/// The number of bits `x` needs, `64 − x.leading_zeros()` (0 for 0).
+///
+/// Cortex-M0 and RV32IMC have no count-leading-zeros instruction, and the library call that
+/// stands in for one costs about 35 instructions; three comparisons and a 16-entry table cost
+/// about a dozen. Elsewhere it is the instruction.
+#[inline]
+#[must_use]
+pub(crate) const fn bit_length(x: u64) -> u32 {
+    #[cfg(any(
+        all(target_arch = "arm", not(target_has_atomic = "32")),
+        all(target_arch = "riscv32", not(target_feature = "zbb"))
+    ))]
+    {
+        let high = (x >> 32) as u32;
+        if high != 0 {
+            32 + bit_length_u32(high)
+        } else {
+            bit_length_u32(x as u32)
+        }
+    }
+    #[cfg(not(any(
+        all(target_arch = "arm", not(target_has_atomic = "32")),
+        all(target_arch = "riscv32", not(target_feature = "zbb"))
+    )))]
+    {
+        64 - x.leading_zeros()
+    }
+}
+
+/// [`bit_length`] of a 32-bit value by halving the range three times and a table for the
+/// last four bits. Compiled everywhere, so the host tests check it.
+#[cfg_attr(
+    not(any(
+        all(target_arch = "arm", not(target_has_atomic = "32")),
+        all(target_arch = "riscv32", not(target_feature = "zbb"))
+    )),
+    allow(dead_code)
+)]
+#[inline]
+const fn bit_length_u32(mut x: u32) -> u32 {
+    const NIBBLE: [u8; 16] = [0, 1, 2, 2, 3, 3, 3, 3, 4, 4, 4, 4, 4, 4, 4, 4];
+    let mut n = 0;
+    if x >= 1 << 16 {
+        n += 16;
+        x >>= 16;
+    }
+    if x >= 1 << 8 {
+        n += 8;
+        x >>= 8;
+    }
+    if x >= 1 << 4 {
+        n += 4;
+        x >>= 4;
+    }
+    n + NIBBLE[x as usize] as u32
+}
+
 /// A Q32.32 raw value rounded (half up) back to Q16.16, saturating at the ends of the range.
 #[inline]
 #[must_use]
@@ -198,6 +290,27 @@ mod tests {
                 assert_eq!(split_mul_u32(ua, ub), ua as u64 * ub as u64, "{ua} × {ub}");
             }
         }
+    }
+
+    #[test]
+    fn bit_lengths_and_shifts_agree_with_the_plain_operations() {
+        let mut seed = 0x9e37_79b9_7f4a_7c15u64;
+        for i in 0..20_000u32 {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            let x = seed >> (i % 64);
+            assert_eq!(bit_length(x), 64 - x.leading_zeros(), "{x}");
+            assert_eq!(bit_length_u32(x as u32), 32 - (x as u32).leading_zeros());
+            let k = i % 33;
+            let fits = x & (u64::MAX >> (32 - k));
+            assert_eq!(shr_to_u32(fits, k), (fits >> k) as u32, "{fits} >> {k}");
+            let (a, b, shift) = (seed as i32, (seed >> 32) as i32, 1 + i % 63);
+            let exact = ((a as i128 * b as i128 + (1i128 << (shift - 1))) >> shift) as i64;
+            assert_eq!(mul_shift_round(a, b, shift), exact, "{a} × {b} >> {shift}");
+        }
+        assert_eq!(bit_length(0), 0);
+        assert_eq!(bit_length(u64::MAX), 64);
     }
 
     #[test]

@@ -1,6 +1,6 @@
 //! The exact integer square root, kept in one place so that it can be swapped by measurement.
 
-use crate::fx::wide_mul_u32;
+use crate::fx::{shr_to_u32, wide_mul_u32};
 use crate::rsqrt::rsqrt;
 
 /// `floor(sqrt(x))` for every `u64`, exactly.
@@ -31,15 +31,17 @@ pub fn isqrt(x: u64) -> u64 {
     // √x ≈ m · y · 2^(half − 62).
     let p = 2 * half;
     let m = if p >= 32 {
-        (x >> (p - 32)) as u32
+        shr_to_u32(x, p - 32)
     } else {
         (x as u32) << (32 - p)
     };
     let mut r = wide_mul_u32(m, y) >> (62 - half);
-    while r.checked_mul(r).is_none_or(|square| square > x) {
+    // r² by a 32 × 32 product; from r = 2³² up it exceeds every u64.
+    let square = |r: u64| (r >> 32 == 0).then(|| wide_mul_u32(r as u32, r as u32));
+    while square(r).is_none_or(|s| s > x) {
         r -= 1;
     }
-    while (r + 1).checked_mul(r + 1).is_some_and(|square| square <= x) {
+    while square(r + 1).is_some_and(|s| s <= x) {
         r += 1;
     }
     r

@@ -74,20 +74,47 @@ pub fn shoot_row<const N: usize, const L: usize>(
             bounded |= 1 << index;
         }
     }
-    for col in 0..camera.cols() {
-        let mut here = among;
-        let mut rest = bounded;
-        while rest != 0 {
-            let index = rest.trailing_zeros() as usize;
-            rest &= rest - 1;
-            let (first, last) = spans[index];
-            if (col as i16) < first || (col as i16) > last {
-                here &= !(1 << index);
-            }
+    // Consecutive pixels differ by one column step, exactly (see `Camera::row_start`).
+    let (mut towards, step) = (camera.row_start(row), camera.column_step());
+    let mut col = 0u16;
+    while col < camera.cols() {
+        // The objects worth trying here, and the column where that set next changes: the
+        // row is a few runs of columns, each with one set.
+        let (here, until) = runs_from(col as i16, among, bounded, &spans, camera.cols());
+        while col < until {
+            let ray = camera.ray_along(towards);
+            each(col, &ray, scene.shoot_among(&ray, here));
+            towards = towards + step;
+            col += 1;
         }
-        let ray = camera.ray(row, col);
-        each(col, &ray, scene.shoot_among(&ray, here));
     }
+}
+
+/// From column `col`: the objects of `among` whose column span (for those in `bounded`)
+/// holds it, and the first column after `col` where that changes (at most `cols`).
+fn runs_from(
+    col: i16,
+    among: u64,
+    bounded: u64,
+    spans: &[(i16, i16); 64],
+    cols: u16,
+) -> (u64, u16) {
+    let (mut here, mut until) = (among, cols as i16);
+    let mut rest = bounded;
+    while rest != 0 {
+        let index = rest.trailing_zeros();
+        rest &= rest - 1;
+        let (first, last) = spans[index as usize];
+        if col < first {
+            here &= !(1 << index);
+            until = until.min(first);
+        } else if col > last {
+            here &= !(1 << index);
+        } else {
+            until = until.min(last.saturating_add(1));
+        }
+    }
+    (here, until.max(col + 1) as u16)
 }
 
 /// [`render_row`] with `n × n` supersampling: each pixel is the mean of `n²` rays through

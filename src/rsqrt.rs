@@ -5,7 +5,7 @@
 //! [`rsqrt`] finds `1/√s` by table and Newton steps in 32-bit fixed point instead, and a
 //! vector is normalised with three multiplications.
 
-use crate::fx::wide_mul_u32;
+use crate::fx::{bit_length, shr_to_u32, wide_mul_u32};
 /// `1/√μ` for `μ = (64 + i + ½)/256`, `i` in 0..192, in Q2.14: the seed of the Newton steps.
 ///
 /// Built at compile time from an integer square root, so there is no float anywhere.
@@ -29,10 +29,10 @@ const SEEDS: [u16; 192] = {
 #[must_use]
 pub(crate) fn rsqrt(s: u64) -> (u32, u32) {
     // s < 2^p with p even, and s ≥ 2^(p−2).
-    let bits = 64 - s.leading_zeros();
+    let bits = bit_length(s);
     let p = (bits + 1) & !1;
     let m = if p >= 32 {
-        (s >> (p - 32)) as u32
+        shr_to_u32(s, p - 32)
     } else {
         (s as u32) << (32 - p)
     };

@@ -101,6 +101,8 @@ pub struct Scene<const N: usize, const L: usize = 4> {
     background: Background,
     shadows: bool,
     depth: u8,
+    /// Bit `i` set for each object `i` below 64: what [`Scene::shoot_among`] may try.
+    present: u64,
 }
 
 impl<const N: usize, const L: usize> Scene<N, L> {
@@ -122,6 +124,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
             background: background.into(),
             shadows: true,
             depth: Self::DEFAULT_DEPTH,
+            present: 0,
         };
         scene.add_light(light)?;
         Ok(scene)
@@ -133,6 +136,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
             .push(object)
             .map_err(|_| Error::CapacityExceeded { capacity: N })?;
         let index = self.objects.len() - 1;
+        self.present = low_bits(self.objects.len());
         for (cones, light) in self.cones.iter_mut().zip(&self.lights) {
             cones[index] = ShadowCone::new(light.position, &object.shape);
         }
@@ -294,7 +298,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
             }
         };
         // Only the set bits, lowest first: culled objects cost nothing.
-        let mut rest = among & low_bits(self.objects.len());
+        let mut rest = among & self.present;
         while rest != 0 {
             let index = rest.trailing_zeros() as usize;
             rest &= rest - 1;

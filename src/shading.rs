@@ -18,13 +18,14 @@ pub(crate) const fn channel_to_linear(c: u8) -> Fx {
 /// A summed channel back to 0..=255: times 255, rounded half up, clamped.
 #[inline]
 pub(crate) const fn linear_to_channel(x: Fx) -> u8 {
-    let scaled = (x.to_bits() as i64 * 255 + 0x8000) >> 16;
-    if scaled < 0 {
+    // From 1.0 up everything is 255, and below it the product fits 32 bits.
+    let x = x.to_bits();
+    if x <= 0 {
         0
-    } else if scaled > 255 {
+    } else if x >= 1 << 16 {
         255
     } else {
-        scaled as u8
+        ((x * 255 + 0x8000) >> 16) as u8
     }
 }
 

@@ -145,8 +145,7 @@ impl Sphere {
     pub fn normal_at(&self, x: Vec3) -> Vec3 {
         let shift = FRAC - 1 + self.inv_shift; // (v·2^(31+k)/r) / 2^(15+k) = v·2¹⁶/r
         let scale = |c: Fx| {
-            let p = fx::wide_mul(c.to_bits(), self.inv_radius);
-            let q = (p + (1 << (shift - 1))) >> shift;
+            let q = fx::mul_shift_round(c.to_bits(), self.inv_radius, shift);
             // A point within rounding of the surface gives |q| ≤ 2¹⁶ plus a few units.
             Fx::from_bits(q.clamp(-(1 << FRAC), 1 << FRAC) as i32)
         };

@@ -199,11 +199,8 @@ impl Vec3 {
         // 1/‖self‖ in units of 2⁻¹⁶ is y · 2⁻⁽³⁰⁺ˢʰⁱᶠᵗ⁾ · 2¹⁶.
         let (y, shift) = rsqrt(square);
         let shift = 14 + shift;
-        let scale = |c: Fx| {
-            // |c| ≤ 2³¹ and y < 2³¹: the product fits i64.
-            let p = fx::wide_mul(c.to_bits(), y as i32);
-            Fx::from_bits(((p + (1 << (shift - 1))) >> shift) as i32)
-        };
+        // |c| ≤ ‖self‖ and y·‖self‖ ≈ 2^(30 + shift − 14): each result is at most 2¹⁶ and a bit.
+        let scale = |c: Fx| Fx::from_bits(fx::mul_shift_round(c.to_bits(), y as i32, shift) as i32);
         Some(Vec3::new(scale(self.x), scale(self.y), scale(self.z)))
     }
 
