@@ -27,6 +27,11 @@ impl Background {
 
     /// The colour seen along the unit direction `dir`, in linear units (1 = 255).
     pub(crate) fn along(&self, dir: Vec3) -> Linear {
+        if self.top == self.bottom {
+            // A plain colour: nothing to blend.
+            let c = self.top;
+            return [c.r, c.g, c.b].map(channel_to_linear);
+        }
         let s = (dir.y + Fx::ONE) >> 1; // 0 straight down, 1 straight up
         let mix = |b: u8, t: u8| {
             let (b, t) = (channel_to_linear(b), channel_to_linear(t));

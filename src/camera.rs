@@ -310,10 +310,11 @@ impl Camera {
         self.right
     }
 
-    /// The ray from the eye along `towards`, normalised: [`Camera::ray`] for a direction
-    /// from [`Camera::row_start`].
-    pub(crate) fn ray_along(&self, towards: Vec3) -> Ray {
-        Ray::new_unchecked(self.eye, towards.normalize_or_zero())
+    /// The ray from the eye along `towards`, whose squared length is `square`, normalised:
+    /// [`Camera::ray`] for a direction from [`Camera::row_start`].
+    pub(crate) fn ray_along(&self, towards: Vec3, square: u64) -> Ray {
+        let dir = towards.normalize_with_square(square);
+        Ray::new_unchecked(self.eye, dir.unwrap_or(Vec3::ZERO))
     }
 
     /// The unit normal of the plane through the eye that holds every ray of display row
@@ -367,6 +368,7 @@ impl Camera {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::row_squares::RowSquares;
 
     #[test]
     fn chapter_screen_pixel_centres() {
@@ -418,10 +420,13 @@ mod tests {
         for camera in cameras {
             for row in 0..camera.rows() {
                 let mut towards = camera.row_start(row);
+                let mut square = RowSquares::new(towards, camera.column_step());
                 for col in 0..camera.cols() {
                     assert_eq!(towards, camera.towards(row, col), "({row}, {col})");
-                    assert_eq!(camera.ray_along(towards), camera.ray(row, col));
+                    assert_eq!(square.now(), towards.length_squared_wide());
+                    assert_eq!(camera.ray_along(towards, square.now()), camera.ray(row, col));
                     towards = towards + camera.column_step();
+                    square.step();
                 }
             }
         }

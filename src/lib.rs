@@ -71,6 +71,7 @@ mod material;
 mod plane;
 mod ray;
 mod render;
+mod row_squares;
 mod rsqrt;
 mod scene;
 mod shading;

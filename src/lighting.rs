@@ -47,7 +47,8 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         let (mut diffuse, mut specular) = (Fx::ZERO, Fx::ZERO);
         for (index, light) in self.lights().iter().enumerate() {
             let to_light = light.position - hit.point;
-            let Some(l) = to_light.try_normalize() else {
+            let distance_squared = to_light.length_squared_wide();
+            let Some(l) = to_light.normalize_with_square(distance_squared) else {
                 continue;
             };
             let cos = normal.dot_exact(l);
@@ -56,7 +57,6 @@ impl<const N: usize, const L: usize> Scene<N, L> {
             }
             if self.shadows() {
                 let shadow_ray = Ray::new_unchecked(hit.point, l);
-                let distance_squared = to_light.length_squared_wide();
                 if self.occluded(&shadow_ray, distance_squared, hit.object, index) {
                     continue;
                 }

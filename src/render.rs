@@ -6,6 +6,7 @@ use crate::error::Error;
 use crate::framebuffer::Framebuffer;
 use crate::hit::Hit;
 use crate::ray::Ray;
+use crate::row_squares::RowSquares;
 use crate::scene::{Scene, Shape};
 
 /// Renders display row `row` (0 at the top) into `out`, one colour per column.
@@ -76,15 +77,17 @@ pub fn shoot_row<const N: usize, const L: usize>(
     }
     // Consecutive pixels differ by one column step, exactly (see `Camera::row_start`).
     let (mut towards, step) = (camera.row_start(row), camera.column_step());
+    let mut square = RowSquares::new(towards, step);
     let mut col = 0u16;
     while col < camera.cols() {
         // The objects worth trying here, and the column where that set next changes: the
         // row is a few runs of columns, each with one set.
         let (here, until) = runs_from(col as i16, among, bounded, &spans, camera.cols());
         while col < until {
-            let ray = camera.ray_along(towards);
+            let ray = camera.ray_along(towards, square.now());
             each(col, &ray, scene.shoot_among(&ray, here));
             towards = towards + step;
+            square.step();
             col += 1;
         }
     }

@@ -192,7 +192,13 @@ impl Vec3 {
     /// ```
     #[must_use]
     pub fn try_normalize(self) -> Option<Vec3> {
-        let square = self.length_squared_wide();
+        self.normalize_with_square(self.length_squared_wide())
+    }
+
+    /// [`Vec3::try_normalize`] given `square`, which must be `self.length_squared_wide()`:
+    /// for callers that have it already, or can keep it up to date for less.
+    #[inline]
+    pub(crate) fn normalize_with_square(self, square: u64) -> Option<Vec3> {
         if square == 0 {
             return None;
         }
