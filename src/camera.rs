@@ -5,6 +5,7 @@ use micromath::F32Ext;
 use crate::error::Error;
 use crate::fx::{self, FRAC, Fx};
 use crate::ray::Ray;
+use crate::row_rays::RowRays;
 use crate::vec3::Vec3;
 
 /// Largest screen size in pixels, per side.
@@ -297,6 +298,13 @@ impl Camera {
         Ray::new_unchecked(self.eye, dir)
     }
 
+    /// The rays of display row `row`, left to right: [`Camera::ray`] for each column, found
+    /// for less (see [`RowRays`]).
+    #[must_use]
+    pub fn row_rays(&self, row: u16) -> RowRays<'_> {
+        RowRays::new(self, row)
+    }
+
     /// From the eye towards the centre of pixel (`row`, 0), unnormalised: with
     /// [`Camera::column_step`] added `col` times it is exactly the direction towards pixel
     /// (`row`, `col`), since each column adds `2·right` to a numerator that is halved with
@@ -368,7 +376,7 @@ impl Camera {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::row_squares::RowSquares;
+    use crate::row_rays::RowSquares;
 
     #[test]
     fn chapter_screen_pixel_centres() {
@@ -424,7 +432,10 @@ mod tests {
                 for col in 0..camera.cols() {
                     assert_eq!(towards, camera.towards(row, col), "({row}, {col})");
                     assert_eq!(square.now(), towards.length_squared_wide());
-                    assert_eq!(camera.ray_along(towards, square.now()), camera.ray(row, col));
+                    assert_eq!(
+                        camera.ray_along(towards, square.now()),
+                        camera.ray(row, col)
+                    );
                     towards = towards + camera.column_step();
                     square.step();
                 }

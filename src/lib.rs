@@ -38,7 +38,7 @@
 //! # Modules
 //! - numbers: [`Fx`], [`mul`], [`isqrt`], [`Vec3`]
 //! - geometry: [`Ray`], [`Plane`], [`Sphere`], [`Hit`]
-//! - viewing: [`Camera`]
+//! - viewing: [`Camera`], and [`RowRays`], a row of its rays for a few additions each
 //! - the world: [`Scene`], [`Object`], [`Shape`], [`Material`], [`Checker`], [`Light`],
 //!   [`Background`], [`Rgb`]
 //! - output: [`render`], [`render_row`], [`render_row_supersampled`], [`shoot_row`],
@@ -71,7 +71,7 @@ mod material;
 mod plane;
 mod ray;
 mod render;
-mod row_squares;
+mod row_rays;
 mod rsqrt;
 mod scene;
 mod shading;
@@ -96,6 +96,7 @@ pub use material::{Checker, Material};
 pub use plane::Plane;
 pub use ray::Ray;
 pub use render::{render, render_row, render_row_supersampled, shoot_row};
+pub use row_rays::RowRays;
 pub use scene::{Object, Scene, Shape};
 pub use sphere::Sphere;
 pub use vec3::Vec3;

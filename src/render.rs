@@ -6,7 +6,7 @@ use crate::error::Error;
 use crate::framebuffer::Framebuffer;
 use crate::hit::Hit;
 use crate::ray::Ray;
-use crate::row_squares::RowSquares;
+use crate::row_rays::RowSquares;
 use crate::scene::{Scene, Shape};
 
 /// Renders display row `row` (0 at the top) into `out`, one colour per column.
@@ -75,7 +75,7 @@ pub fn shoot_row<const N: usize, const L: usize>(
             bounded |= 1 << index;
         }
     }
-    // Consecutive pixels differ by one column step, exactly (see `Camera::row_start`).
+    // Consecutive pixels differ by one column step, exactly: the rays of `Camera::row_rays`.
     let (mut towards, step) = (camera.row_start(row), camera.column_step());
     let mut square = RowSquares::new(towards, step);
     let mut col = 0u16;

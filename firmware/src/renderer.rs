@@ -159,8 +159,9 @@ impl Renderer for Fixed {
     }
 }
 
-/// The first stage of [`Fixed`] alone, for the profile: a ray through every pixel centre,
-/// written out as the bytes of its direction so that nothing is optimised away.
+/// The first stage of [`Fixed`] alone, for the profile: a ray through every pixel centre, as
+/// [`fixray::shoot_row`] makes them ([`Camera::row_rays`]), written out as the bytes of its
+/// direction so that nothing is optimised away.
 pub struct FixedRays {
     camera: Camera,
 }
@@ -176,8 +177,8 @@ impl Renderer for FixedRays {
     }
 
     fn render_row(&self, row: u16, out: &mut [Rgb]) -> Result<(), Error> {
-        for (col, pixel) in (0..self.camera.cols()).zip(out.iter_mut()) {
-            let dir = self.camera.ray(row, col).dir;
+        for (ray, pixel) in self.camera.row_rays(row).zip(out.iter_mut()) {
+            let dir = ray.dir;
             *pixel = Rgb::new(
                 dir.x.to_bits() as u8,
                 dir.y.to_bits() as u8,

@@ -1,0 +1,104 @@
+//! [`RowRays`]: the rays of a display row, in column order, for a few additions each before
+//! normalising; and [`RowSquares`], the squared lengths that make that possible.
+
+use crate::camera::Camera;
+use crate::ray::Ray;
+use crate::vec3::Vec3;
+
+/// The rays through the pixels of one display row, left to right: [`Camera::row_rays`].
+///
+/// Each is the very ray [`Camera::ray`] gives for its pixel, bit for bit, but found for less:
+/// the direction towards the next pixel is this one's plus one column step, and its squared
+/// length comes from [`RowSquares`], so a ray costs one normalisation and no products besides.
+///
+/// ```
+/// use fixray::demo;
+/// let camera = demo::camera(160, 128).unwrap();
+/// for (col, ray) in (0..).zip(camera.row_rays(40)) {
+///     assert_eq!(ray, camera.ray(40, col));
+/// }
+/// assert_eq!(camera.row_rays(40).count(), 160);
+/// ```
+#[derive(Debug, Clone)]
+pub struct RowRays<'a> {
+    camera: &'a Camera,
+    towards: Vec3,
+    squares: RowSquares,
+    left: u16,
+}
+
+impl<'a> RowRays<'a> {
+    pub(crate) fn new(camera: &'a Camera, row: u16) -> Self {
+        let towards = camera.row_start(row);
+        RowRays {
+            camera,
+            towards,
+            squares: RowSquares::new(towards, camera.column_step()),
+            left: camera.cols(),
+        }
+    }
+}
+
+impl Iterator for RowRays<'_> {
+    type Item = Ray;
+
+    #[inline]
+    fn next(&mut self) -> Option<Ray> {
+        if self.left == 0 {
+            return None;
+        }
+        self.left -= 1;
+        let ray = self.camera.ray_along(self.towards, self.squares.now());
+        self.towards = self.towards + self.camera.column_step();
+        self.squares.step();
+        Some(ray)
+    }
+
+    fn size_hint(&self) -> (usize, Option<usize>) {
+        (self.left as usize, Some(self.left as usize))
+    }
+}
+
+impl ExactSizeIterator for RowRays<'_> {}
+
+/// `‖w + k·r‖²` for `k = 0, 1, 2, …`, exactly, in Q32.32 like [`Vec3::length_squared_wide`].
+///
+/// The directions towards a row's pixels are `w + k·r` (see `Camera::row_start`). Their
+/// squared lengths obey `‖w + (k+1)r‖² = ‖w + k·r‖² + 2·(w + k·r)·r + ‖r‖²`, and the middle
+/// term grows by `‖r‖²` a column, so after a few products for the first pixel each further
+/// one costs two 64-bit additions instead of three squares. Integers throughout, so the
+/// values are exactly the squares the pixels' directions have: the normalised rays are the
+/// same bits as [`Camera::ray`](crate::Camera::ray)'s.
+#[derive(Debug, Clone)]
+pub(crate) struct RowSquares {
+    square: u64,
+    /// `2·(w + k·r)·r + ‖r‖²`: what the next step adds. Negative while the row nears the
+    /// point closest to the eye.
+    increment: i64,
+    /// `2·‖r‖²`.
+    growth: i64,
+}
+
+impl RowSquares {
+    /// Starting at `start` (`w`) and stepping by `step` (`r`); both within the camera's
+    /// bounds (components below 2¹⁵), so each product and sum fits 64 bits.
+    pub(crate) fn new(start: Vec3, step: Vec3) -> Self {
+        let r2 = step.length_squared_wide() as i64;
+        RowSquares {
+            square: start.length_squared_wide(),
+            increment: 2 * start.dot_wide_exact(step) + r2,
+            growth: 2 * r2,
+        }
+    }
+
+    /// `‖w + k·r‖²` for the current `k`.
+    pub(crate) const fn now(&self) -> u64 {
+        self.square
+    }
+
+    /// On to `k + 1`.
+    pub(crate) fn step(&mut self) {
+        self.square = self.square.wrapping_add_signed(self.increment);
+        self.increment += self.growth;
+    }
+}
