@@ -152,9 +152,19 @@ impl Plane {
     /// The `t` of [`Plane::intersect`] alone, without the hit's normal.
     #[must_use]
     pub fn hit_distance(&self, ray: &Ray) -> Option<Fx> {
+        self.hit_distance_from(ray, self.numerator(ray.origin))
+    }
+
+    /// `−n·(p_r − p0)`, the numerator of Eq. 4.2, exactly in Q32.32: it depends on the
+    /// ray's origin alone, so rays that share one (a camera's) can share it.
+    pub(crate) fn numerator(&self, origin: Vec3) -> i64 {
+        -self.normal.dot_wide_exact(origin - self.point)
+    }
+
+    /// [`Plane::hit_distance`] given `num`, which must be `self.numerator(ray.origin)`.
+    pub(crate) fn hit_distance_from(&self, ray: &Ray, num: i64) -> Option<Fx> {
         // Both are exact Q32.32 values.
         let den = self.normal.dot_wide_exact(ray.dir);
-        let num = -self.normal.dot_wide_exact(ray.origin - self.point);
         if den == 0 || (num != 0 && (num < 0) != (den < 0)) {
             return None; // parallel, or the plane is behind the origin
         }

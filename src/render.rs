@@ -7,7 +7,7 @@ use crate::framebuffer::Framebuffer;
 use crate::hit::Hit;
 use crate::ray::Ray;
 use crate::row_rays::RowSquares;
-use crate::scene::{Scene, Shape};
+use crate::scene::{Eye, Scene, Shape};
 
 /// Renders display row `row` (0 at the top) into `out`, one colour per column.
 ///
@@ -78,6 +78,7 @@ pub fn shoot_row<const N: usize, const L: usize>(
     // Consecutive pixels differ by one column step, exactly: the rays of `Camera::row_rays`.
     let (mut towards, step) = (camera.row_start(row), camera.column_step());
     let mut square = RowSquares::new(towards, step);
+    let eye = Eye::new(scene, camera.eye());
     let mut col = 0u16;
     while col < camera.cols() {
         // The objects worth trying here, and the column where that set next changes: the
@@ -85,7 +86,7 @@ pub fn shoot_row<const N: usize, const L: usize>(
         let (here, until) = runs_from(col as i16, among, bounded, &spans, camera.cols());
         while col < until {
             let ray = camera.ray_along(towards, square.now());
-            each(col, &ray, scene.shoot_among(&ray, here));
+            each(col, &ray, scene.shoot_from_eye(&ray, here, &eye));
             towards = towards + step;
             square.step();
             col += 1;

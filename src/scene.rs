@@ -13,6 +13,7 @@ use crate::material::Material;
 use crate::plane::Plane;
 use crate::ray::Ray;
 use crate::sphere::Sphere;
+use crate::vec3::Vec3;
 
 /// The geometry of an object.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -289,9 +290,30 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// only for the nearest.
     #[must_use]
     pub fn shoot_among(&self, ray: &Ray, among: u64) -> Option<Hit> {
+        self.nearest_among(ray, among, |_, shape| shape.hit_distance(ray))
+    }
+
+    /// [`Scene::shoot_among`] for a ray from `eye.origin()`, with what all such rays share
+    /// worked out once: the same hit, for less.
+    pub(crate) fn shoot_from_eye(&self, ray: &Ray, among: u64, eye: &Eye<N>) -> Option<Hit> {
+        self.nearest_among(ray, among, |index, shape| match shape {
+            Shape::Plane(plane) => plane.hit_distance_from(ray, eye.numerators[index]),
+            Shape::Sphere(sphere) => sphere.hit_distance(ray),
+        })
+    }
+
+    /// The nearest hit among the objects of `among` (see [`Scene::shoot_among`]), with
+    /// `distance(index, shape)` giving each one's `t`.
+    #[inline]
+    fn nearest_among(
+        &self,
+        ray: &Ray,
+        among: u64,
+        distance: impl Fn(usize, &Shape) -> Option<Fx>,
+    ) -> Option<Hit> {
         let mut nearest: Option<(Fx, usize)> = None;
         let mut try_object = |index: usize, object: &Object| {
-            if let Some(t) = object.shape.hit_distance(ray)
+            if let Some(t) = distance(index, &object.shape)
                 && nearest.is_none_or(|(best, _)| t < best)
             {
                 nearest = Some((t, index));
@@ -349,6 +371,26 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     #[must_use]
     pub fn trace(&self, ray: &Ray) -> Rgb {
         self.shade(ray, self.shoot(ray).as_ref())
+    }
+}
+
+/// What every ray from one point (a camera's eye) shares, worked out once a frame: each
+/// plane's numerator of Eq. 4.2 ([`Plane`]'s `t = −n·(p_r − p0) / (n·u_r)` has `p_r` only in
+/// its numerator).
+pub(crate) struct Eye<const N: usize> {
+    numerators: [i64; N],
+}
+
+impl<const N: usize> Eye<N> {
+    /// The shared terms of rays from `origin` into `scene`.
+    pub(crate) fn new<const L: usize>(scene: &Scene<N, L>, origin: Vec3) -> Self {
+        let mut numerators = [0; N];
+        for (num, object) in numerators.iter_mut().zip(scene.objects()) {
+            if let Shape::Plane(plane) = object.shape {
+                *num = plane.numerator(origin);
+            }
+        }
+        Eye { numerators }
     }
 }
 
