@@ -6,7 +6,7 @@ use crate::background::Background;
 use crate::color::Rgb;
 use crate::cone::ShadowCone;
 use crate::error::Error;
-use crate::fx::Fx;
+use crate::fx::{self, Fx};
 use crate::hit::Hit;
 use crate::light::{Light, unit_interval};
 use crate::material::Material;
@@ -347,17 +347,22 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         leaving: usize,
         light: usize,
     ) -> bool {
-        let cones = self.cones.get(light);
-        self.objects.iter().enumerate().any(|(index, object)| {
-            index != leaving
-                && cones
-                    .and_then(|c| c.get(index))
-                    .is_none_or(|cone| cone.may_block(ray.dir, distance_squared))
-                && object.shape.hit_distance(ray).is_some_and(|t| {
-                    let t = t.to_bits() as u64;
-                    t * t < distance_squared
-                })
-        })
+        let blocks = |object: &Object| {
+            object.shape.hit_distance(ray).is_some_and(|t| {
+                let t = t.to_bits() as u32;
+                fx::wide_mul_u32(t, t) < distance_squared
+            })
+        };
+        let Some(cones) = self.cones.get(light) else {
+            // Not one of the scene's lights: no cones to go by.
+            return (self.objects.iter().enumerate()).any(|(i, o)| i != leaving && blocks(o));
+        };
+        for (index, (object, cone)) in self.objects.iter().zip(cones).enumerate() {
+            if index != leaving && cone.may_block(ray.dir, distance_squared) && blocks(object) {
+                return true;
+            }
+        }
+        false
     }
 
     /// The colour seen along `ray` when it has this first hit: the background for a miss,
