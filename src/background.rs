@@ -26,6 +26,11 @@ impl Background {
     }
 
     /// The colour seen along the unit direction `dir`, in linear units (1 = 255).
+    /// The one colour of a plain background, or `None` for a gradient.
+    pub(crate) fn plain_colour(&self) -> Option<Rgb> {
+        (self.top == self.bottom).then_some(self.top)
+    }
+
     pub(crate) fn along(&self, dir: Vec3) -> Linear {
         if self.top == self.bottom {
             // A plain colour: nothing to blend.

@@ -73,6 +73,7 @@ mod ray;
 mod render;
 mod row_rays;
 mod rsqrt;
+mod runs;
 mod scene;
 mod shading;
 mod sphere;

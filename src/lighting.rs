@@ -14,10 +14,41 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// times the product of the reflectivities so far, and the ray that leaves the last
     /// allowed bounce sees the background. The stack stays the same size at any depth.
     pub(crate) fn radiance(&self, ray: &Ray, hit: Option<Hit>) -> Linear {
-        let (mut sum, mut weight) = ([Fx::ZERO; 3], Fx::ONE);
-        let (mut ray, mut hit) = (*ray, hit);
+        let Some((h, object)) = hit.and_then(|h| Some((h, self.objects().get(h.object)?))) else {
+            return self.background().along(ray.dir);
+        };
+        // The first surface has weight 1: its light is the sum so far, exactly.
+        let normal = facing(h.normal, ray.dir);
+        let light = self.local(object, &h, normal, ray.dir);
+        if object.material.reflect == Fx::ZERO {
+            return light;
+        }
+        self.reflections(light, ray.dir, &h, normal, object.material.reflect)
+    }
+
+    /// [`Scene::radiance`] past a first surface that mirrors: `sum` is that surface's own
+    /// light, and the bounces are followed from it. Kept apart so that the common matte pixel
+    /// does not pay for the loop's set-up.
+    #[inline(never)]
+    fn reflections(
+        &self,
+        mut sum: Linear,
+        dir: Vec3,
+        first: &Hit,
+        normal: Vec3,
+        reflect: Fx,
+    ) -> Linear {
+        let mut weight = fx::mul(Fx::ONE, reflect);
+        let mut ray = Ray::new_unchecked(first.point, mirror(dir, normal));
+        let mut leaving = first.object;
         let mut bounce = 0;
         loop {
+            if bounce == self.depth() {
+                add(&mut sum, weight, self.background().along(ray.dir));
+                return sum;
+            }
+            let hit = self.shoot_from(&ray, Some(leaving));
+            bounce += 1;
             let Some((h, object)) = hit.and_then(|h| Some((h, self.objects().get(h.object)?)))
             else {
                 add(&mut sum, weight, self.background().along(ray.dir));
@@ -31,12 +62,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
             }
             weight = fx::mul(weight, reflect);
             ray = Ray::new_unchecked(h.point, mirror(ray.dir, normal));
-            if bounce == self.depth() {
-                add(&mut sum, weight, self.background().along(ray.dir));
-                return sum;
-            }
-            hit = self.shoot_from(&ray, Some(h.object));
-            bounce += 1;
+            leaving = h.object;
         }
     }
 

@@ -7,7 +7,8 @@ use crate::framebuffer::Framebuffer;
 use crate::hit::Hit;
 use crate::ray::Ray;
 use crate::row_rays::RowSquares;
-use crate::scene::{Eye, Scene, Shape};
+use crate::runs::Runs;
+use crate::scene::Scene;
 
 /// Renders display row `row` (0 at the top) into `out`, one colour per column.
 ///
@@ -30,11 +31,26 @@ pub fn render_row<const N: usize, const L: usize>(
     out: &mut [Rgb],
 ) -> Result<(), Error> {
     check_row(camera, row, out)?;
-    shoot_row(scene, camera, row, |col, ray, hit| {
-        if let Some(pixel) = out.get_mut(col as usize) {
-            *pixel = scene.shade(ray, hit.as_ref());
-        }
-    });
+    // Where nothing can be hit a plain sky needs no rays: `shade` would give its colour.
+    let sky = scene.background().plain_colour();
+    cast_row(
+        scene,
+        camera,
+        row,
+        sky.is_some(),
+        |first, end, cast| match cast {
+            Some((ray, hit)) => {
+                if let Some(pixel) = out.get_mut(first as usize) {
+                    *pixel = scene.shade(ray, hit.as_ref());
+                }
+            }
+            None => {
+                if let (Some(run), Some(sky)) = (out.get_mut(first as usize..end as usize), sky) {
+                    run.fill(sky);
+                }
+            }
+        },
+    );
     Ok(())
 }
 
@@ -62,63 +78,43 @@ pub fn shoot_row<const N: usize, const L: usize>(
     row: u16,
     mut each: impl FnMut(u16, &Ray, Option<Hit>),
 ) {
-    let among = scene.seen_from_row(camera, row);
-    // The columns each sphere this row can meet may show up in; the rest of the row skips it.
-    let mut spans = [(0i16, 0i16); 64];
-    let mut bounded = 0u64;
-    for (index, object) in scene.objects().iter().enumerate().take(64) {
-        if among & (1 << index) != 0
-            && let Shape::Sphere(sphere) = object.shape
-            && let Some(span) = camera.column_span(sphere.centre(), sphere.radius())
-        {
-            spans[index] = span;
-            bounded |= 1 << index;
+    cast_row(scene, camera, row, false, |col, _, cast| {
+        if let Some((ray, hit)) = cast {
+            each(col, ray, hit);
         }
-    }
-    // Consecutive pixels differ by one column step, exactly: the rays of `Camera::row_rays`.
-    let (mut towards, step) = (camera.row_start(row), camera.column_step());
-    let mut square = RowSquares::new(towards, step);
-    let eye = Eye::new(scene, camera.eye());
-    let mut col = 0u16;
-    while col < camera.cols() {
-        // The objects worth trying here, and the column where that set next changes: the
-        // row is a few runs of columns, each with one set.
-        let (here, until) = runs_from(col as i16, among, bounded, &spans, camera.cols());
-        while col < until {
-            let ray = camera.ray_along(towards, square.now());
-            each(col, &ray, scene.shoot_from_eye(&ray, here, &eye));
-            towards = towards + step;
-            square.step();
-            col += 1;
-        }
-    }
+    });
 }
 
-/// From column `col`: the objects of `among` whose column span (for those in `bounded`)
-/// holds it, and the first column after `col` where that changes (at most `cols`).
-fn runs_from(
-    col: i16,
-    among: u64,
-    bounded: u64,
-    spans: &[(i16, i16); 64],
-    cols: u16,
-) -> (u64, u16) {
-    let (mut here, mut until) = (among, cols as i16);
-    let mut rest = bounded;
-    while rest != 0 {
-        let index = rest.trailing_zeros();
-        rest &= rest - 1;
-        let (first, last) = spans[index as usize];
-        if col < first {
-            here &= !(1 << index);
-            until = until.min(first);
-        } else if col > last {
-            here &= !(1 << index);
-        } else {
-            until = until.min(last.saturating_add(1));
+/// The engine of [`shoot_row`] and [`render_row`]: the row's runs ([`Runs`]), and in each the
+/// rays, by column steps ([`Camera::row_rays`]), shot at the run's objects; each is handed to
+/// `each(col, col + 1, Some((ray, hit)))`.
+///
+/// With `skip_empty`, a run in which no object can be hit is handed over whole and without
+/// rays, as `each(first, end, None)`: `render_row` paints a plain sky so, which needs no ray.
+fn cast_row<const N: usize, const L: usize>(
+    scene: &Scene<N, L>,
+    camera: &Camera,
+    row: u16,
+    skip_empty: bool,
+    mut each: impl FnMut(u16, u16, Option<(&Ray, Option<Hit>)>),
+) {
+    let mut runs = Runs::new(scene, camera, row);
+    while let Some((first, end, here)) = runs.next_run() {
+        if here == 0 && skip_empty {
+            each(first, end, None);
+            continue;
+        }
+        // Consecutive pixels differ by one column step, exactly.
+        let mut towards = runs.towards(first);
+        let mut square = RowSquares::new(towards, camera.column_step());
+        for col in first..end {
+            let ray = camera.ray_along(towards, square.now());
+            let hit = scene.shoot_from_eye(&ray, here, runs.eye());
+            each(col, col + 1, Some((&ray, hit)));
+            towards = towards + camera.column_step();
+            square.step();
         }
     }
-    (here, until.max(col + 1) as u16)
 }
 
 /// [`render_row`] with `n × n` supersampling: each pixel is the mean of `n²` rays through

@@ -227,6 +227,11 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         self.depth
     }
 
+    /// Bit `i` set for each object `i` below 64.
+    pub(crate) const fn present(&self) -> u64 {
+        self.present
+    }
+
     /// Shoots `ray` into the scene and returns the nearest hit; on a tie the object added
     /// first wins.
     #[must_use]
@@ -297,7 +302,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// worked out once: the same hit, for less.
     pub(crate) fn shoot_from_eye(&self, ray: &Ray, among: u64, eye: &Eye<N>) -> Option<Hit> {
         self.nearest_among(ray, among, |index, shape| match shape {
-            Shape::Plane(plane) => plane.hit_distance_from(ray, eye.numerators[index]),
+            Shape::Plane(plane) => plane.hit_distance_from(ray, eye.numerator(index)),
             Shape::Sphere(sphere) => sphere.hit_distance(ray),
         })
     }
@@ -396,6 +401,11 @@ impl<const N: usize> Eye<N> {
             }
         }
         Eye { numerators }
+    }
+
+    /// Plane `index`'s numerator of Eq. 4.2 for rays from the eye (0 for anything else).
+    pub(crate) fn numerator(&self, index: usize) -> i64 {
+        self.numerators.get(index).copied().unwrap_or(0)
     }
 }
 

@@ -1,0 +1,168 @@
+//! [`Runs`]: a display row cut into runs of columns, each with the set of objects its rays
+//! can meet.
+
+use crate::camera::Camera;
+use crate::scene::{Eye, Scene, Shape};
+use crate::vec3::Vec3;
+
+/// The runs of one display row, left to right.
+///
+/// A row's rays lie in one plane through the eye ([`Scene::seen_from_row`] drops the spheres
+/// that plane misses), each remaining sphere covers a span of columns (`Camera::column_span`),
+/// and a plane is missed by a whole run when every ray of it points away from the plane or
+/// along it. Between the ends of spans the set of objects worth trying is constant: a run.
+/// Every test is conservative, so a ray tries every object it can hit and the hits are
+/// exactly [`Scene::shoot`]'s.
+pub(crate) struct Runs<'a, const N: usize, const L: usize> {
+    scene: &'a Scene<N, L>,
+    /// The objects the row's plane can meet.
+    among: u64,
+    /// Spheres with a span, and their spans (inclusive, possibly past the screen's edges).
+    bounded: u64,
+    spans: [(i16, i16); 64],
+    /// Planes, and what their hit tests share for rays from the eye.
+    planes: u64,
+    eye: Eye<N>,
+    /// The unnormalised direction towards column 0, and one column's step.
+    start: Vec3,
+    step: Vec3,
+    col: u16,
+    cols: u16,
+}
+
+impl<'a, const N: usize, const L: usize> Runs<'a, N, L> {
+    /// The runs of display row `row` of `camera`'s view of `scene`.
+    pub(crate) fn new(scene: &'a Scene<N, L>, camera: &Camera, row: u16) -> Self {
+        // Objects past the 64th have no bit of their own and are always tried; bit 63 stands
+        // in for them, so that a run is never taken for empty while they exist.
+        let beyond = if scene.objects().len() > 64 {
+            1 << 63
+        } else {
+            0
+        };
+        let among = scene.seen_from_row(camera, row) & scene.present() | beyond;
+        let mut runs = Runs {
+            scene,
+            among,
+            bounded: 0,
+            spans: [(0, 0); 64],
+            planes: 0,
+            eye: Eye::new(scene, camera.eye()),
+            start: camera.row_start(row),
+            step: camera.column_step(),
+            col: 0,
+            cols: camera.cols(),
+        };
+        for (index, object) in scene.objects().iter().enumerate().take(64) {
+            match object.shape {
+                Shape::Sphere(sphere) if among & (1 << index) != 0 => {
+                    if let Some(span) = camera.column_span(sphere.centre(), sphere.radius()) {
+                        runs.spans[index] = span;
+                        runs.bounded |= 1 << index;
+                    }
+                }
+                Shape::Plane(_) => runs.planes |= 1 << index,
+                Shape::Sphere(_) => {}
+            }
+        }
+        runs
+    }
+
+    /// What rays from the eye share, for [`Scene::shoot_from_eye`].
+    pub(crate) const fn eye(&self) -> &Eye<N> {
+        &self.eye
+    }
+
+    /// The unnormalised direction towards column `col` (see `Camera::row_start`): the value
+    /// a walk along the row by column steps reaches, exactly.
+    pub(crate) fn towards(&self, col: u16) -> Vec3 {
+        let times = |s: crate::Fx| crate::Fx::from_bits(s.to_bits().saturating_mul(col as i32));
+        self.start + Vec3::new(times(self.step.x), times(self.step.y), times(self.step.z))
+    }
+
+    /// The next run: its first column, the column after its last, and the objects to try.
+    pub(crate) fn next_run(&mut self) -> Option<(u16, u16, u64)> {
+        if self.col >= self.cols {
+            return None;
+        }
+        let col = self.col as i16;
+        let (mut here, mut until) = (self.among, self.cols as i16);
+        let mut rest = self.bounded;
+        while rest != 0 {
+            let index = rest.trailing_zeros();
+            rest &= rest - 1;
+            let (first, last) = self.spans[index as usize];
+            if col < first {
+                here &= !(1 << index);
+                until = until.min(first);
+            } else if col > last {
+                here &= !(1 << index);
+            } else {
+                until = until.min(last.saturating_add(1));
+            }
+        }
+        let until = until.max(col + 1) as u16;
+        let mut planes = here & self.planes;
+        if planes != 0 {
+            let (first, last) = (self.towards(self.col), self.towards(until - 1));
+            while planes != 0 {
+                let index = planes.trailing_zeros() as usize;
+                planes &= planes - 1;
+                if let Some(object) = self.scene.objects().get(index)
+                    && let Shape::Plane(plane) = object.shape
+                    && misses_all(plane.normal(), self.eye.numerator(index), first, last)
+                {
+                    here &= !(1 << index);
+                }
+            }
+        }
+        let run = (self.col, until, here);
+        self.col = until;
+        Some(run)
+    }
+}
+
+/// Whether every ray of a run, whose unnormalised directions run linearly from `first` to
+/// `last`, misses a plane of unit normal `normal` and Eq. 4.2 numerator `numerator` by
+/// pointing away from it or along it.
+///
+/// A ray hits only if `n·u` is non-zero with the numerator's sign. Each component of a
+/// normalised direction `u` is within 2⁻¹⁶ of `w/‖w‖`, so `n·u` is within `‖n‖₁·2⁻¹⁶ < 2⁻¹⁵`
+/// of `n·w/‖w‖`, and `‖w‖ ≤ ‖w‖₁`: where `n·w > 2·‖w‖₁` (in raw units), `n·u > 0` for sure.
+/// `n·w` is linear along the run and `‖w‖₁` convex, so the ends decide, with twice the
+/// margin to spare.
+fn misses_all(normal: Vec3, numerator: i64, first: Vec3, last: Vec3) -> bool {
+    if numerator == 0 {
+        return false; // the eye on the plane: leave it to the full test
+    }
+    let l1 = |w: Vec3| {
+        w.x.to_bits().unsigned_abs() as i64
+            + w.y.to_bits().unsigned_abs() as i64
+            + w.z.to_bits().unsigned_abs() as i64
+    };
+    let margin = 4 * l1(first).max(l1(last));
+    let (a, b) = (normal.dot_wide_exact(first), normal.dot_wide_exact(last));
+    if numerator < 0 {
+        a.min(b) > margin
+    } else {
+        a.max(b) < -margin
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::demo;
+
+    #[test]
+    fn the_sky_rows_of_the_demo_try_nothing() {
+        let (scene, camera) = (demo::scene(), demo::camera(160, 128).unwrap());
+        let mut runs = Runs::new(&scene, &camera, 0);
+        let mut count = 0;
+        while let Some((_, _, here)) = runs.next_run() {
+            assert_eq!(here, 0);
+            count += 1;
+        }
+        assert_eq!(count, 1);
+    }
+}
