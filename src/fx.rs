@@ -204,6 +204,40 @@ pub const fn mul(a: Fx, b: Fx) -> Fx {
     narrow(wide_mul(a.to_bits(), b.to_bits()))
 }
 
+/// `a · b` rounded to nearest, for a product known to fit: `|b| ≤ 1` (raw `|b| ≤ 2¹⁶`), so
+/// `|a · b| ≤ |a|`. Shading's colour channels and highlight powers are such factors by
+/// construction. It skips [`mul`]'s saturation check, which costs about as much as the
+/// product itself.
+#[inline]
+#[must_use]
+pub(crate) const fn mul_fits(a: Fx, b: Fx) -> Fx {
+    Fx::from_bits(((wide_mul(a.to_bits(), b.to_bits()) + (1 << (FRAC - 1))) >> FRAC) as i32)
+}
+
+/// `t · u` rounded to nearest, for a distance `t` and `u` a component of a unit vector.
+///
+/// Hit distances lie within [`FAR`] and unit components within 1, far inside the bounds
+/// this takes them to (`|t| < 2¹⁴`, `|u| < 2`), where the product fits without a
+/// saturation check; the clamps (one `ssat` each on Cortex-M4) keep a hand-built ray whose
+/// direction is not a unit vector from making it wrap.
+#[inline]
+#[must_use]
+pub(crate) const fn mul_unit(t: Fx, u: Fx) -> Fx {
+    const fn clamp(x: i32, bits: u32) -> i32 {
+        let (low, high) = (-(1 << bits), (1 << bits) - 1);
+        if x < low {
+            low
+        } else if x > high {
+            high
+        } else {
+            x
+        }
+    }
+    let (t, u) = (clamp(t.to_bits(), 30), clamp(u.to_bits(), 17));
+    // |t · u| < 2⁴⁷: the rounded quotient by 2¹⁶ fits 32 bits.
+    Fx::from_bits(((wide_mul(t, u) + (1 << (FRAC - 1))) >> FRAC) as i32)
+}
+
 /// The range [`LIMIT`] allows, as the error messages state it.
 pub(crate) const LIMIT_RANGE: &str = "the overflow-safe range ±1024";
 
@@ -311,6 +345,26 @@ mod tests {
         }
         assert_eq!(bit_length(0), 0);
         assert_eq!(bit_length(u64::MAX), 64);
+    }
+
+    #[test]
+    fn bounded_products_equal_the_saturating_one_within_their_bounds() {
+        let mut seed = 0x5851_f42d_4c95_7f2du64;
+        for _ in 0..20_000 {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            let a = Fx::from_bits((seed as i32) >> 2); // |a| < 2¹³
+            let u = Fx::from_bits(((seed >> 32) as i32) >> 15); // |u| ≤ 1
+            assert_eq!(mul_fits(a, u), mul(a, u));
+            assert_eq!(mul_unit(a, u), mul(a, u));
+        }
+        // Far outside the bounds: clamped, not wrapped.
+        assert_eq!(
+            mul_unit(Fx::MAX, Fx::MAX),
+            mul(Fx::from_bits((1 << 30) - 1), Fx::from_bits((1 << 17) - 1))
+        );
+        assert!(mul_unit(Fx::MIN, Fx::MAX) < Fx::ZERO);
     }
 
     #[test]

@@ -87,13 +87,13 @@ impl<const N: usize, const L: usize> Scene<N, L> {
                     continue;
                 }
             }
-            diffuse = diffuse.saturating_add(fx::mul(light.intensity, cos));
+            diffuse = diffuse.saturating_add(fx::mul_unit(light.intensity, cos));
             if material.specular > Fx::ZERO
                 && let Some(half) = (l - dir).try_normalize()
             {
                 let s = normal.dot(half).max(Fx::ZERO).min(Fx::ONE);
-                specular =
-                    specular.saturating_add(fx::mul(light.intensity, powi(s, material.shininess)));
+                specular = specular
+                    .saturating_add(fx::mul_fits(light.intensity, powi(s, material.shininess)));
             }
         }
         // Materials and lights have public fields, so weights outside their checked ranges can
@@ -107,7 +107,8 @@ impl<const N: usize, const L: usize> Scene<N, L> {
             Fx::ZERO
         };
         let colour = object.colour_at(hit.point);
-        let channel = |c: u8| fx::mul(channel_to_linear(c), k).saturating_add(highlight);
+        // A channel is at most 1: its product with k needs no saturation.
+        let channel = |c: u8| fx::mul_fits(k, channel_to_linear(c)).saturating_add(highlight);
         [channel(colour.r), channel(colour.g), channel(colour.b)]
     }
 }

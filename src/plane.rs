@@ -194,7 +194,7 @@ impl Plane {
         };
         Hit {
             t,
-            point: ray.at(t),
+            point: ray.at_hit(t),
             normal,
             object: 0,
         }

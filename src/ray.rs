@@ -48,4 +48,11 @@ impl Ray {
     pub fn at(&self, t: Fx) -> Vec3 {
         self.origin + self.dir.scale(t)
     }
+
+    /// [`Ray::at`] for a hit's distance (within ±[`FAR`](crate::FAR)) along a unit direction:
+    /// the same point, for products without a saturation check.
+    #[inline]
+    pub(crate) fn at_hit(&self, t: Fx) -> Vec3 {
+        self.origin + self.dir.scale_unit(t)
+    }
 }

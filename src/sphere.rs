@@ -109,8 +109,11 @@ impl Sphere {
         if t_close < -self.radius {
             return None; // wholly behind the origin
         }
+        if t_close > FAR + self.radius {
+            return None; // every hit would lie beyond t_close − r > FAR
+        }
         // x_close − c = t_close·u_r − (c − p_r)
-        let d2 = (ray.dir.scale(t_close) - to_centre).length_squared_wide();
+        let d2 = (ray.dir.scale_unit(t_close) - to_centre).length_squared_wide();
         let r2 = fx::wide_mul(self.radius.to_bits(), self.radius.to_bits()).unsigned_abs();
         if d2 > r2 {
             return None;
@@ -130,7 +133,7 @@ impl Sphere {
     /// The hit at distance `t` along `ray`: its point and outward normal.
     #[must_use]
     pub fn hit_at(&self, ray: &Ray, t: Fx) -> Hit {
-        let point = ray.at(t);
+        let point = ray.at_hit(t);
         Hit {
             t,
             point,

@@ -97,6 +97,17 @@ impl Vec3 {
         Vec3::new(fx::mul(self.x, k), fx::mul(self.y, k), fx::mul(self.z, k))
     }
 
+    /// `self · t` for a unit vector `self` and a distance `t` (see [`fx::mul_unit`]): a
+    /// point's offset along a ray.
+    #[inline]
+    pub(crate) const fn scale_unit(self, t: Fx) -> Self {
+        Vec3::new(
+            fx::mul_unit(t, self.x),
+            fx::mul_unit(t, self.y),
+            fx::mul_unit(t, self.z),
+        )
+    }
+
     /// The dot product as a Q32.32 raw value (`i64`, 2⁻³² units): exact wherever it fits,
     /// which it always does in the render path (each product is below 2⁶² in magnitude).
     /// Beyond that it saturates rather than wrap.
