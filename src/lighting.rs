@@ -2,6 +2,7 @@
 
 use crate::fx::{self, Fx};
 use crate::hit::Hit;
+use crate::light::Light;
 use crate::ray::Ray;
 use crate::scene::{Object, Scene};
 use crate::shading::{Linear, channel_to_linear, powi};
@@ -71,20 +72,20 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     fn local(&self, object: &Object, hit: &Hit, normal: Vec3, dir: Vec3) -> Linear {
         let material = &object.material;
         let (mut diffuse, mut specular) = (Fx::ZERO, Fx::ZERO);
-        for (index, light) in self.lights().iter().enumerate() {
+        let mut light_up = |index: usize, light: &Light| {
             let to_light = light.position - hit.point;
             let distance_squared = to_light.length_squared_wide();
             let Some(l) = to_light.normalize_with_square(distance_squared) else {
-                continue;
+                return;
             };
             let cos = normal.dot_exact(l);
             if cos <= Fx::ZERO {
-                continue;
+                return;
             }
             if self.shadows() {
                 let shadow_ray = Ray::new_unchecked(hit.point, l);
                 if self.occluded(&shadow_ray, distance_squared, hit.object, index) {
-                    continue;
+                    return;
                 }
             }
             diffuse = diffuse.saturating_add(fx::mul_unit(light.intensity, cos));
@@ -94,6 +95,15 @@ impl<const N: usize, const L: usize> Scene<N, L> {
                 let s = normal.dot(half).max(Fx::ZERO).min(Fx::ONE);
                 specular = specular
                     .saturating_add(fx::mul_fits(light.intensity, powi(s, material.shininess)));
+            }
+        };
+        // One light, the common case on a small screen, without a loop to set up.
+        match self.lights() {
+            [only] => light_up(0, only),
+            lights => {
+                for (index, light) in lights.iter().enumerate() {
+                    light_up(index, light);
+                }
             }
         }
         // Materials and lights have public fields, so weights outside their checked ranges can
