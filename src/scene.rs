@@ -316,12 +316,13 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         among: u64,
         distance: impl Fn(usize, &Shape) -> Option<Fx>,
     ) -> Option<Hit> {
-        let mut nearest: Option<(Fx, usize)> = None;
+        // Hits lie within FAR, so any hit is nearer than MAX.
+        let (mut best, mut nearest) = (Fx::MAX, usize::MAX);
         let mut try_object = |index: usize, object: &Object| {
             if let Some(t) = distance(index, &object.shape)
-                && nearest.is_none_or(|(best, _)| t < best)
+                && t < best
             {
-                nearest = Some((t, index));
+                (best, nearest) = (t, index);
             }
         };
         // Only the set bits, lowest first: culled objects cost nothing.
@@ -334,10 +335,9 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         for (index, object) in self.objects.iter().enumerate().skip(64) {
             try_object(index, object);
         }
-        let (t, index) = nearest?;
-        let hit = self.objects[index].shape.hit_at(ray, t);
+        let hit = self.objects.get(nearest)?.shape.hit_at(ray, best);
         Some(Hit {
-            object: index,
+            object: nearest,
             ..hit
         })
     }
