@@ -439,6 +439,14 @@ mod tests {
                     towards = towards + camera.column_step();
                     square.step();
                 }
+                // Skipping ahead lands on the same rays.
+                for skip in [0u16, 3, 9, 100] {
+                    let mut rays = camera.row_rays(row);
+                    rays.nth(4);
+                    let col = 5 + skip; // past the five rays already taken
+                    let expected = (col < camera.cols()).then(|| camera.ray(row, col));
+                    assert_eq!(rays.nth(skip as usize), expected, "({row}, {col})");
+                }
             }
         }
     }

@@ -42,6 +42,7 @@
 //! - the world: [`Scene`], [`Object`], [`Shape`], [`Material`], [`Checker`], [`Light`],
 //!   [`Background`], [`Rgb`]
 //! - output: [`render`], [`render_row`], [`render_row_supersampled`], [`shoot_row`],
+//!   [`shoot_row_skipping`],
 //!   [`Framebuffer`], [`FrameHash`]
 //! - [`draw`]: onto any `embedded-graphics` display, streamed band by band ([`Viewport`]),
 //!   in [`FromRgb`] colours with Bayer dithering for grey and one-bit displays
@@ -96,7 +97,7 @@ pub use light::Light;
 pub use material::{Checker, Material};
 pub use plane::Plane;
 pub use ray::Ray;
-pub use render::{render, render_row, render_row_supersampled, shoot_row};
+pub use render::{render, render_row, render_row_supersampled, shoot_row, shoot_row_skipping};
 pub use row_rays::RowRays;
 pub use scene::{Object, Scene, Shape};
 pub use sphere::Sphere;

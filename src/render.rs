@@ -85,6 +85,31 @@ pub fn shoot_row<const N: usize, const L: usize>(
     });
 }
 
+/// [`shoot_row`] for a renderer whose background needs no ray (a plain colour): the columns
+/// where the row can meet nothing come as whole runs, `empty(first..end)`, without rays made
+/// for them; every other column as `each(col, ray, hit)`, in column order. This is what
+/// [`render_row`] does over a plain sky, for a shading of one's own.
+///
+/// ```
+/// use fixray::{demo, shoot_row_skipping};
+/// let (scene, camera) = (demo::scene(), demo::camera(40, 32).unwrap());
+/// let (mut skipped, mut shot) = (0, 0);
+/// shoot_row_skipping(&scene, &camera, 0, |run| skipped += run.len(), |_, _, _| shot += 1);
+/// assert_eq!((skipped, shot), (40, 0)); // the top row sees only sky
+/// ```
+pub fn shoot_row_skipping<const N: usize, const L: usize>(
+    scene: &Scene<N, L>,
+    camera: &Camera,
+    row: u16,
+    mut empty: impl FnMut(core::ops::Range<u16>),
+    mut each: impl FnMut(u16, &Ray, Option<Hit>),
+) {
+    cast_row(scene, camera, row, true, |first, end, cast| match cast {
+        Some((ray, hit)) => each(first, ray, hit),
+        None => empty(first..end),
+    });
+}
+
 /// The engine of [`shoot_row`] and [`render_row`]: the row's runs ([`Runs`]), and in each the
 /// rays, by column steps ([`Camera::row_rays`]), shot at the run's objects; each is handed to
 /// `each(col, col + 1, Some((ray, hit)))`.

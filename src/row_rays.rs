@@ -18,6 +18,7 @@ use crate::vec3::Vec3;
 ///     assert_eq!(ray, camera.ray(40, col));
 /// }
 /// assert_eq!(camera.row_rays(40).count(), 160);
+/// assert_eq!(camera.row_rays(40).nth(100), Some(camera.ray(40, 100)));
 /// ```
 #[derive(Debug, Clone)]
 pub struct RowRays<'a> {
@@ -52,6 +53,18 @@ impl Iterator for RowRays<'_> {
         self.towards = self.towards + self.camera.column_step();
         self.squares.step();
         Some(ray)
+    }
+
+    /// Skips `n` rays without making them: a few products, however many are skipped.
+    fn nth(&mut self, n: usize) -> Option<Ray> {
+        let n = n.min(self.left as usize) as u16;
+        if n > 0 {
+            let step = self.camera.column_step();
+            self.towards = self.towards + step.times(n as i32);
+            self.squares = RowSquares::new(self.towards, step);
+            self.left -= n;
+        }
+        self.next()
     }
 
     fn size_hint(&self) -> (usize, Option<usize>) {

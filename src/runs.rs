@@ -76,8 +76,7 @@ impl<'a, const N: usize, const L: usize> Runs<'a, N, L> {
     /// The unnormalised direction towards column `col` (see `Camera::row_start`): the value
     /// a walk along the row by column steps reaches, exactly.
     pub(crate) fn towards(&self, col: u16) -> Vec3 {
-        let times = |s: crate::Fx| crate::Fx::from_bits(s.to_bits().saturating_mul(col as i32));
-        self.start + Vec3::new(times(self.step.x), times(self.step.y), times(self.step.z))
+        self.start + self.step.times(col as i32)
     }
 
     /// The next run: its first column, the column after its last, and the objects to try.

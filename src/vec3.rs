@@ -108,6 +108,13 @@ impl Vec3 {
         )
     }
 
+    /// `self · n` for a whole number `n`, exact (saturating at the ends of the range).
+    #[inline]
+    pub(crate) fn times(self, n: i32) -> Self {
+        let t = |c: Fx| Fx::from_bits(c.to_bits().saturating_mul(n));
+        Vec3::new(t(self.x), t(self.y), t(self.z))
+    }
+
     /// The dot product as a Q32.32 raw value (`i64`, 2⁻³² units): exact wherever it fits,
     /// which it always does in the render path (each product is below 2⁶² in magnitude).
     /// Beyond that it saturates rather than wrap.

@@ -159,11 +159,17 @@ impl Renderer for Fixed {
     }
 }
 
-/// The first stage of [`Fixed`] alone, for the profile: a ray through every pixel centre, as
-/// [`fixray::shoot_row`] makes them ([`Camera::row_rays`]), written out as the bytes of its
-/// direction so that nothing is optimised away.
+/// Runs of sky a row of [`FixedRays`] skips, at most this many.
+const SKIPS: usize = 4;
+
+/// The first stage of [`Fixed`] alone, for the profile: the rays `render_row` makes, as
+/// [`Camera::row_rays`] (the rays of [`fixray::shoot_row`]) without those of the runs of sky
+/// that `render_row` paints without rays, written out as the bytes of their directions so
+/// that nothing is optimised away. The runs are found when it is made, not while measured.
 pub struct FixedRays {
     camera: Camera,
+    /// For each row, the runs of columns `render_row` makes no rays for.
+    skips: [[(u16, u16); SKIPS]; ROWS as usize],
 }
 
 impl Renderer for FixedRays {
@@ -171,26 +177,63 @@ impl Renderer for FixedRays {
     type Error = Error;
 
     fn new(variant: Variant, cols: u16, rows: u16) -> Result<Self, Error> {
-        Ok(FixedRays {
-            camera: variant.camera(cols, rows)?,
-        })
+        let (scene, camera) = (variant.scene()?, variant.camera(cols, rows)?);
+        let mut skips = [[(cols, cols); SKIPS]; ROWS as usize];
+        let too_many = Error::CapacityExceeded { capacity: SKIPS };
+        for (row, runs) in (0..rows).zip(skips.iter_mut()) {
+            let mut count = 0;
+            fixray::shoot_row_skipping(
+                &scene,
+                &camera,
+                row,
+                |run| {
+                    if let Some(slot) = runs.get_mut(count) {
+                        *slot = (run.start, run.end);
+                    }
+                    count += 1;
+                },
+                |_, _, _| {},
+            );
+            if count > SKIPS {
+                return Err(too_many);
+            }
+        }
+        if rows > ROWS {
+            return Err(too_many);
+        }
+        Ok(FixedRays { camera, skips })
     }
 
     fn render_row(&self, row: u16, out: &mut [Rgb]) -> Result<(), Error> {
-        for (ray, pixel) in self.camera.row_rays(row).zip(out.iter_mut()) {
-            let dir = ray.dir;
-            *pixel = Rgb::new(
-                dir.x.to_bits() as u8,
-                dir.y.to_bits() as u8,
-                dir.z.to_bits() as u8,
-            );
+        let mut rays = self.camera.row_rays(row);
+        let mut col = 0u16;
+        let skips = self.skips.get(row as usize).into_iter().flatten();
+        for &(first, end) in skips.chain([&(self.camera.cols(), self.camera.cols())]) {
+            while col < first {
+                let Some(ray) = rays.next() else { break };
+                if let Some(pixel) = out.get_mut(col as usize) {
+                    let dir = ray.dir;
+                    *pixel = Rgb::new(
+                        dir.x.to_bits() as u8,
+                        dir.y.to_bits() as u8,
+                        dir.z.to_bits() as u8,
+                    );
+                }
+                col += 1;
+            }
+            if end > first {
+                // Past the run: `nth` passes all but its last ray unmade, and makes that one.
+                rays.nth((end - first - 1) as usize);
+                col = end;
+            }
         }
         Ok(())
     }
 }
 
-/// The first two stages of [`Fixed`], for the profile: the rays and their nearest hits
-/// ([`fixray::shoot_row`], culling included), written out as the hit's object and distance.
+/// The first two stages of [`Fixed`], for the profile: the rays and their nearest hits as
+/// `render_row` makes them ([`fixray::shoot_row_skipping`], culling and runs of sky included),
+/// written out as the hit's object and distance.
 pub struct FixedShoot {
     scene: Scene<8>,
     camera: Camera,
@@ -208,14 +251,33 @@ impl Renderer for FixedShoot {
     }
 
     fn render_row(&self, row: u16, out: &mut [Rgb]) -> Result<(), Error> {
-        fixray::shoot_row(&self.scene, &self.camera, row, |col, _, hit| {
-            if let (Some(pixel), Some(hit)) = (out.get_mut(col as usize), hit) {
-                let t = hit.t.to_bits();
-                *pixel = Rgb::new(hit.object as u8, (t >> 8) as u8, t as u8);
-            } else if let Some(pixel) = out.get_mut(col as usize) {
-                *pixel = Rgb::BLACK;
+        let (scene, camera) = (&self.scene, &self.camera);
+        let mut empty = [(0u16, 0u16); SKIPS];
+        let mut count = 0;
+        fixray::shoot_row_skipping(
+            scene,
+            camera,
+            row,
+            |run| {
+                if let Some(slot) = empty.get_mut(count) {
+                    *slot = (run.start, run.end);
+                }
+                count += 1;
+            },
+            |col, _, hit| {
+                if let (Some(pixel), Some(hit)) = (out.get_mut(col as usize), hit) {
+                    let t = hit.t.to_bits();
+                    *pixel = Rgb::new(hit.object as u8, (t >> 8) as u8, t as u8);
+                } else if let Some(pixel) = out.get_mut(col as usize) {
+                    *pixel = Rgb::BLACK;
+                }
+            },
+        );
+        for &(first, end) in empty.iter().take(count) {
+            if let Some(run) = out.get_mut(first as usize..end as usize) {
+                run.fill(Rgb::WHITE);
             }
-        });
+        }
         Ok(())
     }
 }
