@@ -431,11 +431,10 @@ mod tests {
                 let mut square = RowSquares::new(towards, camera.column_step());
                 for col in 0..camera.cols() {
                     assert_eq!(towards, camera.towards(row, col), "({row}, {col})");
-                    assert_eq!(square.now(), towards.length_squared_wide());
-                    assert_eq!(
-                        camera.ray_along(towards, square.now()),
-                        camera.ray(row, col)
-                    );
+                    assert_eq!(square.carried(), towards.length_squared_wide());
+                    assert_eq!(square.now(towards), towards.length_squared_wide());
+                    let ray = camera.ray_along(towards, square.carried());
+                    assert_eq!(ray, camera.ray(row, col));
                     towards = towards + camera.column_step();
                     square.step();
                 }

@@ -133,7 +133,7 @@ fn cast_row<const N: usize, const L: usize>(
         let mut towards = runs.towards(first);
         let mut square = RowSquares::new(towards, camera.column_step());
         for col in first..end {
-            let ray = camera.ray_along(towards, square.now());
+            let ray = camera.ray_along(towards, square.now(towards));
             let hit = scene.shoot_from_eye(&ray, here, runs.eye());
             each(col, col + 1, Some((&ray, hit)));
             towards = towards + camera.column_step();

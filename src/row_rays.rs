@@ -9,7 +9,7 @@ use crate::vec3::Vec3;
 ///
 /// Each is the very ray [`Camera::ray`] gives for its pixel, bit for bit, but found for less:
 /// the direction towards the next pixel is this one's plus one column step, and its squared
-/// length comes from [`RowSquares`], so a ray costs one normalisation and no products besides.
+/// length comes from [`RowSquares`], so a ray costs one normalisation and little besides.
 ///
 /// ```
 /// use fixray::demo;
@@ -49,7 +49,9 @@ impl Iterator for RowRays<'_> {
             return None;
         }
         self.left -= 1;
-        let ray = self.camera.ray_along(self.towards, self.squares.now());
+        let ray = self
+            .camera
+            .ray_along(self.towards, self.squares.now(self.towards));
         self.towards = self.towards + self.camera.column_step();
         self.squares.step();
         Some(ray)
@@ -104,8 +106,23 @@ impl RowSquares {
         }
     }
 
-    /// `‖w + k·r‖²` for the current `k`.
-    pub(crate) const fn now(&self) -> u64 {
+    /// `‖w + k·r‖²` for the current `k`, where `towards` is `w + k·r`.
+    ///
+    /// Where the chip multiplies 32 × 32 → 64 bits in one instruction the three squares cost
+    /// less than carrying the sums along a row (which the compiler keeps on the stack), so
+    /// they are taken afresh; Cortex-M0 keeps the sums. Either way the value is the same.
+    #[inline]
+    pub(crate) fn now(&self, towards: Vec3) -> u64 {
+        if cfg!(all(target_arch = "arm", not(target_has_atomic = "32"))) {
+            self.square
+        } else {
+            towards.length_squared_wide()
+        }
+    }
+
+    /// The carried sum itself, whatever the chip.
+    #[cfg(test)]
+    pub(crate) const fn carried(&self) -> u64 {
         self.square
     }
 
