@@ -17,11 +17,14 @@ fn rows_match_tracing_each_pixel<const N: usize, const L: usize>(
     }
 }
 
-#[test]
-fn demo_rows_equal_their_pixels_traced_one_by_one() {
-    let mut scene = demo::scene();
-    for (cols, rows) in [(160, 128), (97, 61)] {
-        let camera = demo::camera(cols, rows).unwrap();
+/// A scene with and without shadows, through a camera at two sizes.
+fn rows_match_with_and_without_shadows(
+    mut scene: fixray::Scene<8>,
+    camera: fn(u16, u16) -> Result<fixray::Camera, fixray::Error>,
+    odd_size: (u16, u16),
+) {
+    for (cols, rows) in [(160, 128), odd_size] {
+        let camera = camera(cols, rows).unwrap();
         for shadows in [true, false] {
             scene.set_shadows(shadows);
             rows_match_tracing_each_pixel(&scene, &camera);
@@ -30,15 +33,13 @@ fn demo_rows_equal_their_pixels_traced_one_by_one() {
 }
 
 #[test]
+fn demo_rows_equal_their_pixels_traced_one_by_one() {
+    rows_match_with_and_without_shadows(demo::scene(), demo::camera, (97, 61));
+}
+
+#[test]
 fn classic_rows_equal_their_pixels_traced_one_by_one() {
-    let mut scene = demo::classic();
-    for (cols, rows) in [(160, 128), (83, 67)] {
-        let camera = demo::classic_camera(cols, rows).unwrap();
-        for shadows in [true, false] {
-            scene.set_shadows(shadows);
-            rows_match_tracing_each_pixel(&scene, &camera);
-        }
-    }
+    rows_match_with_and_without_shadows(demo::classic(), demo::classic_camera, (83, 67));
 }
 
 #[test]
