@@ -9,7 +9,8 @@ use crate::vec3::Vec3;
 ///
 /// Each is the very ray [`Camera::ray`] gives for its pixel, bit for bit, but found for less:
 /// the direction towards the next pixel is this one's plus one column step, and its squared
-/// length comes from [`RowSquares`], so a ray costs one normalisation and little besides.
+/// length needs no products on the Cortex-M0 (it is carried along the row by additions), so
+/// a ray costs one normalisation and little besides.
 ///
 /// ```
 /// use fixray::demo;
