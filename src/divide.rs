@@ -1,6 +1,6 @@
 //! Division by a reciprocal: the quotient of two 64-bit values without a 64-bit division.
 
-use crate::fx::{bit_length, shr_to_u32, wide_mul_u32};
+use crate::fx::{bit_length, top_word, wide_mul_u32};
 /// `1/δ` for `δ = (128 + i + ½)/256`, `i` in 0..128, in Q1.15: the seed of the Newton steps.
 const SEEDS: [u16; 128] = {
     let mut seeds = [0u16; 128];
@@ -25,11 +25,7 @@ pub(crate) fn div_q16(num: u64, den: u64) -> u32 {
         return 0;
     }
     let den_bits = bit_length(den); // den < 2^den_bits
-    let d = if den_bits >= 32 {
-        shr_to_u32(den, den_bits - 32)
-    } else {
-        (den as u32) << (32 - den_bits)
-    };
+    let d = top_word(den, den_bits);
     let mut y = (SEEDS[((d >> 24) - 128) as usize] as u32) << 15; // 1/δ in Q2.30
     for _ in 0..2 {
         let dy = (wide_mul_u32(d, y) >> 32) as u32; // δ·y, near 1, in Q2.30
@@ -39,7 +35,7 @@ pub(crate) fn div_q16(num: u64, den: u64) -> u32 {
     // num ≈ n · 2^k with n its top 32 bits.
     let num_bits = bit_length(num);
     let k = num_bits.saturating_sub(32);
-    let n = shr_to_u32(num, k);
+    let n = top_word(num, num_bits.max(32));
     // num·2¹⁶/den = n · 2^k · 2¹⁶ · y · 2⁻³⁰ / 2^den_bits
     let shift = 14 + den_bits - k;
     let q = wide_mul_u32(n, y);
@@ -47,8 +43,8 @@ pub(crate) fn div_q16(num: u64, den: u64) -> u32 {
         return 0;
     }
     if shift >= 33 {
-        // 2^(shift−1) is a whole multiple of 2³²: round on the high word alone (see
-        // `fx::mul_shift_round`). q < 2⁶², so the sum cannot overflow.
+        // `fx::mul_shift_round`'s high-word rounding, unsigned: q < 2⁶³ may reach 2³¹ in its
+        // high word, which the signed step would overflow; the sum fits a u32.
         return (((q >> 32) as u32) + (1 << (shift - 33))) >> (shift - 32);
     }
     ((q + (1 << (shift - 1))) >> shift) as u32

@@ -27,16 +27,26 @@ pub const FAR: Fx = Fx::const_from_int(8192);
 /// Number of fractional bits in [`Fx`].
 pub(crate) const FRAC: u32 = 16;
 
+/// ARMv6-M (Cortex-M0/M0+), which multiplies 32 × 32 → 32 only: there the compiler's 64-bit
+/// product is a call to a full 64 × 64 multiply. (ARMv6-M is told apart from the Arm cores
+/// that have `smull` by its lack of 32-bit atomics: rustc exposes no target feature for the
+/// long multiply.)
+pub(crate) const NO_LONG_MULTIPLY: bool =
+    cfg!(all(target_arch = "arm", not(target_has_atomic = "32")));
+
+/// Chips without a count-leading-zeros instruction: ARMv6-M, and RV32 without Zbb.
+const NO_CLZ: bool = cfg!(any(
+    all(target_arch = "arm", not(target_has_atomic = "32")),
+    all(target_arch = "riscv32", not(target_feature = "zbb"))
+));
+
 /// The product of two Q16.16 raw values, exact, as a Q32.32 raw value.
 #[inline]
 #[must_use]
 pub(crate) const fn wide_mul(a: i32, b: i32) -> i64 {
-    #[cfg(all(target_arch = "arm", not(target_has_atomic = "32")))]
-    {
+    if NO_LONG_MULTIPLY {
         split_mul(a, b)
-    }
-    #[cfg(not(all(target_arch = "arm", not(target_has_atomic = "32"))))]
-    {
+    } else {
         a as i64 * b as i64
     }
 }
@@ -46,26 +56,16 @@ pub(crate) const fn wide_mul(a: i32, b: i32) -> i64 {
 #[inline]
 #[must_use]
 pub(crate) const fn wide_mul_u32(a: u32, b: u32) -> u64 {
-    #[cfg(all(target_arch = "arm", not(target_has_atomic = "32")))]
-    {
+    if NO_LONG_MULTIPLY {
         split_mul_u32(a, b)
-    }
-    #[cfg(not(all(target_arch = "arm", not(target_has_atomic = "32"))))]
-    {
+    } else {
         a as u64 * b as u64
     }
 }
 
-/// [`wide_mul`] for ARMv6-M (Cortex-M0/M0+), which multiplies 32 × 32 → 32 only: there the
-/// compiler's 64-bit product is a call to a full 64 × 64 multiply. (ARMv6-M is told apart
-/// from the Arm cores that have `smull` by its lack of 32-bit atomics: rustc exposes no
-/// target feature for the long multiply.) Four 16-bit partial
-/// products are exact in 32 bits (`|a_hi · b_lo| < 2³¹`, since `|a_hi| ≤ 2¹⁵` and
-/// `b_lo < 2¹⁶`). Compiled everywhere, so the host tests check it.
-#[cfg_attr(
-    not(all(target_arch = "arm", not(target_has_atomic = "32"))),
-    allow(dead_code)
-)]
+/// [`wide_mul`] where there is [`NO_LONG_MULTIPLY`]: four 16-bit partial products are exact
+/// in 32 bits (`|a_hi · b_lo| < 2³¹`, since `|a_hi| ≤ 2¹⁵` and `b_lo < 2¹⁶`). Compiled
+/// everywhere, so the host tests check it.
 #[inline]
 const fn split_mul(a: i32, b: i32) -> i64 {
     let (a_lo, a_hi) = (a & 0xFFFF, a >> 16);
@@ -76,10 +76,6 @@ const fn split_mul(a: i32, b: i32) -> i64 {
 }
 
 /// [`wide_mul_u32`] by four 16-bit partial products; see [`split_mul`].
-#[cfg_attr(
-    not(all(target_arch = "arm", not(target_has_atomic = "32"))),
-    allow(dead_code)
-)]
 #[inline]
 const fn split_mul_u32(a: u32, b: u32) -> u64 {
     let (a_lo, a_hi) = (a & 0xFFFF, a >> 16);
@@ -112,7 +108,7 @@ pub(crate) const fn mul_shift_round(a: i32, b: i32, shift: u32) -> i64 {
 /// with 32-bit shifts only.
 #[inline]
 #[must_use]
-pub(crate) const fn shr_to_u32(x: u64, k: u32) -> u32 {
+const fn shr_to_u32(x: u64, k: u32) -> u32 {
     let (high, low) = ((x >> 32) as u32, x as u32);
     if k == 0 {
         low
@@ -120,6 +116,19 @@ pub(crate) const fn shr_to_u32(x: u64, k: u32) -> u32 {
         high >> (k - 32)
     } else {
         (high << (32 - k)) | (low >> k)
+    }
+}
+
+/// `x · 2^(32 − p)`, truncated, for `x < 2^p` and `1 ≤ p ≤ 64`: `x` moved so that its bit
+/// `p − 1` lands on bit 31. The leading 32 bits of a value whose bit length is at most `p`,
+/// as the reciprocal seeds of `rsqrt`, `isqrt` and division want them, with 32-bit shifts only.
+#[inline]
+#[must_use]
+pub(crate) const fn top_word(x: u64, p: u32) -> u32 {
+    if p >= 32 {
+        shr_to_u32(x, p - 32)
+    } else {
+        (x as u32) << (32 - p)
     }
 }
 
@@ -131,36 +140,19 @@ pub(crate) const fn shr_to_u32(x: u64, k: u32) -> u32 {
 #[inline]
 #[must_use]
 pub(crate) const fn bit_length(x: u64) -> u32 {
-    #[cfg(any(
-        all(target_arch = "arm", not(target_has_atomic = "32")),
-        all(target_arch = "riscv32", not(target_feature = "zbb"))
-    ))]
-    {
-        let high = (x >> 32) as u32;
-        if high != 0 {
-            32 + bit_length_u32(high)
-        } else {
-            bit_length_u32(x as u32)
-        }
+    if !NO_CLZ {
+        return 64 - x.leading_zeros();
     }
-    #[cfg(not(any(
-        all(target_arch = "arm", not(target_has_atomic = "32")),
-        all(target_arch = "riscv32", not(target_feature = "zbb"))
-    )))]
-    {
-        64 - x.leading_zeros()
+    let high = (x >> 32) as u32;
+    if high != 0 {
+        32 + bit_length_u32(high)
+    } else {
+        bit_length_u32(x as u32)
     }
 }
 
 /// [`bit_length`] of a 32-bit value by halving the range three times and a table for the
 /// last four bits. Compiled everywhere, so the host tests check it.
-#[cfg_attr(
-    not(any(
-        all(target_arch = "arm", not(target_has_atomic = "32")),
-        all(target_arch = "riscv32", not(target_feature = "zbb"))
-    )),
-    allow(dead_code)
-)]
 #[inline]
 const fn bit_length_u32(mut x: u32) -> u32 {
     const NIBBLE: [u8; 16] = [0, 1, 2, 2, 3, 3, 3, 3, 4, 4, 4, 4, 4, 4, 4, 4];

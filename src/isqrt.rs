@@ -1,6 +1,6 @@
 //! The exact integer square root, kept in one place so that it can be swapped by measurement.
 
-use crate::fx::{shr_to_u32, wide_mul_u32};
+use crate::fx::{top_word, wide_mul_u32};
 use crate::rsqrt::rsqrt;
 
 /// `floor(sqrt(x))` for every `u64`, exactly.
@@ -30,11 +30,7 @@ pub fn isqrt(x: u64) -> u64 {
     // √x = x · (1/√x). With m the top 32 bits of x, x ≈ m · 2^(2·half − 32), so
     // √x ≈ m · y · 2^(half − 62).
     let p = 2 * half;
-    let m = if p >= 32 {
-        shr_to_u32(x, p - 32)
-    } else {
-        (x as u32) << (32 - p)
-    };
+    let m = top_word(x, p);
     let mut r = wide_mul_u32(m, y) >> (62 - half);
     // r² by a 32 × 32 product; from r = 2³² up it exceeds every u64.
     let square = |r: u64| (r >> 32 == 0).then(|| wide_mul_u32(r as u32, r as u32));

@@ -114,7 +114,7 @@ impl RowSquares {
     /// they are taken afresh; Cortex-M0 keeps the sums. Either way the value is the same.
     #[inline]
     pub(crate) fn now(&self, towards: Vec3) -> u64 {
-        if cfg!(all(target_arch = "arm", not(target_has_atomic = "32"))) {
+        if crate::fx::NO_LONG_MULTIPLY {
             self.square
         } else {
             towards.length_squared_wide()

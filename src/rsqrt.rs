@@ -5,7 +5,7 @@
 //! [`rsqrt`] finds `1/√s` by table and Newton steps in 32-bit fixed point instead, and a
 //! vector is normalised with three multiplications.
 
-use crate::fx::{bit_length, shr_to_u32, wide_mul_u32};
+use crate::fx::{bit_length, top_word, wide_mul_u32};
 /// `1/√μ` for `μ = (64 + i + ½)/256`, `i` in 0..192, in Q2.14: the seed of the Newton steps.
 ///
 /// Built at compile time from an integer square root, so there is no float anywhere.
@@ -31,11 +31,7 @@ pub(crate) fn rsqrt(s: u64) -> (u32, u32) {
     // s < 2^p with p even, and s ≥ 2^(p−2).
     let bits = bit_length(s);
     let p = (bits + 1) & !1;
-    let m = if p >= 32 {
-        shr_to_u32(s, p - 32)
-    } else {
-        (s as u32) << (32 - p)
-    };
+    let m = top_word(s, p);
     let seed = SEEDS[((m >> 24) - 64) as usize] as u32;
     let mut y = seed << 16; // Q2.30
     for _ in 0..2 {
