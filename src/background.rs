@@ -25,16 +25,15 @@ impl Background {
         }
     }
 
-    /// The colour seen along the unit direction `dir`, in linear units (1 = 255).
     /// The one colour of a plain background, or `None` for a gradient.
     pub(crate) fn plain_colour(&self) -> Option<Rgb> {
         (self.top == self.bottom).then_some(self.top)
     }
 
+    /// The colour seen along the unit direction `dir`, in linear units (1 = 255).
     pub(crate) fn along(&self, dir: Vec3) -> Linear {
-        if self.top == self.bottom {
-            // A plain colour: nothing to blend.
-            let c = self.top;
+        if let Some(c) = self.plain_colour() {
+            // Nothing to blend.
             return [c.r, c.g, c.b].map(channel_to_linear);
         }
         let s = (dir.y + Fx::ONE) >> 1; // 0 straight down, 1 straight up
