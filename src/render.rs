@@ -129,7 +129,9 @@ fn cast_row<const N: usize, const L: usize>(
             each(first, end, None);
             continue;
         }
-        // Consecutive pixels differ by one column step, exactly.
+        // Consecutive pixels differ by one column step, exactly: `RowRays`' walk, written out
+        // because through the iterator the frame measured 19 instructions a pixel more on the
+        // Cortex-M4F and 66 on the M0 (with a `while let` over it, 2 and 7).
         let mut towards = runs.towards(first);
         let mut square = RowSquares::new(towards, camera.column_step());
         for col in first..end {
