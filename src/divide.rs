@@ -56,13 +56,8 @@ mod tests {
 
     #[test]
     fn within_a_unit_and_two_to_the_minus_27_of_the_exact_quotient() {
-        let mut seed = 0x2545_f491_4f6c_dd1du64;
-        let mut next = || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            seed
-        };
+        let mut rng = crate::xorshift::XorShift(0x2545_f491_4f6c_dd1d);
+        let mut next = || rng.next();
         for _ in 0..1_000_000 {
             let den = (next() >> (next() % 60)).max(1);
             // A quotient of up to 2²⁹ (t up to 8192 in Q16.16).

@@ -301,12 +301,10 @@ mod tests {
             i32::MAX,
             i32::MIN,
         ];
-        let mut seed = 0x0123_4567_89ab_cdefu64;
+        let mut rng = crate::xorshift::XorShift(0x0123_4567_89ab_cdef);
         let mut values = edges.to_vec();
         for _ in 0..300 {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
+            let seed = rng.next();
             values.push((seed as i32) >> (seed >> 59)); // every magnitude
         }
         for &a in &values {
@@ -320,11 +318,9 @@ mod tests {
 
     #[test]
     fn bit_lengths_and_shifts_agree_with_the_plain_operations() {
-        let mut seed = 0x9e37_79b9_7f4a_7c15u64;
+        let mut rng = crate::xorshift::XorShift(0x9e37_79b9_7f4a_7c15);
         for i in 0..20_000u32 {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
+            let seed = rng.next();
             let x = seed >> (i % 64);
             assert_eq!(bit_length(x), 64 - x.leading_zeros(), "{x}");
             assert_eq!(bit_length_u32(x as u32), 32 - (x as u32).leading_zeros());
@@ -341,11 +337,9 @@ mod tests {
 
     #[test]
     fn bounded_products_equal_the_saturating_one_within_their_bounds() {
-        let mut seed = 0x5851_f42d_4c95_7f2du64;
+        let mut rng = crate::xorshift::XorShift(0x5851_f42d_4c95_7f2d);
         for _ in 0..20_000 {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
+            let seed = rng.next();
             let a = Fx::from_bits((seed as i32) >> 2); // |a| < 2¹³
             let u = Fx::from_bits(((seed >> 32) as i32) >> 15); // |u| ≤ 1
             assert_eq!(mul_fits(a, u), mul(a, u));

@@ -62,11 +62,9 @@ mod tests {
 
     #[test]
     fn random_u64_of_every_size() {
-        let mut seed = 0x9e37_79b9_7f4a_7c15u64;
+        let mut rng = crate::xorshift::XorShift(0x9e37_79b9_7f4a_7c15);
         for _ in 0..1_000_000 {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
+            let seed = rng.next();
             let x = seed >> (seed % 64); // every bit length, not only the largest
             assert!(is_floor_sqrt(x, isqrt(x)), "isqrt({x}) = {}", isqrt(x));
         }

@@ -79,6 +79,8 @@ mod scene;
 mod shading;
 mod sphere;
 mod vec3;
+#[cfg(test)]
+mod xorshift;
 
 #[cfg(feature = "reference")]
 pub mod reference;

@@ -312,11 +312,9 @@ mod tests {
 
     #[test]
     fn normalize_is_within_one_unit_of_exact() {
-        let mut seed = 0x2545_f491_4f6c_dd1du64;
+        let mut rng = crate::xorshift::XorShift(0x2545_f491_4f6c_dd1d);
         let mut next = || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
+            let seed = rng.next();
             // Components of every magnitude, from a few units of 2⁻¹⁶ to Q16.16's limit.
             let magnitude = (seed >> 59) as u32; // 0..32
             (seed as i64 as i32) >> (31 - magnitude.min(31))

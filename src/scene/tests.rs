@@ -65,11 +65,9 @@ fn shadow_cones_never_skip_an_occluder() {
     // light: the cone-culled test must agree with the test that tries every object (light
     // index out of range: no cones).
     let scene = crate::demo::classic();
-    let mut seed = 0x1234_5678_9abc_def0u64;
+    let mut rng = crate::xorshift::XorShift(0x1234_5678_9abc_def0);
     let mut next = |range: f64| {
-        seed ^= seed << 13;
-        seed ^= seed >> 7;
-        seed ^= seed << 17;
+        let seed = rng.next();
         Fx::from_num(((seed >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0) * range)
     };
     let mut blocked = 0;
