@@ -126,8 +126,9 @@ impl Plane {
 
     /// Where `ray` meets the plane: `t = −n·(p_r − p0) / (n·u_r)` (Eq. 4.2).
     ///
-    /// A ray parallel to the plane (`n·u_r = 0`), one whose hit lies behind its origin, and one
-    /// whose hit lies beyond [`FAR`] all miss. The division happens only once the hit is known
+    /// A ray parallel to the plane (`n·u_r = 0`), one whose hit lies behind its origin, one
+    /// whose hit lies beyond [`FAR`] and one that starts on the plane (`n·(p_r − p0) = 0`
+    /// exactly: it leaves the plane or runs along it) all miss. The division happens only once the hit is known
     /// to be in front and within `FAR`, so it cannot divide by zero or overflow. The normal of
     /// the hit faces the ray: planes are two-sided. A bounded plane misses outside its
     /// rectangle.
@@ -165,8 +166,10 @@ impl Plane {
     pub(crate) fn hit_distance_from(&self, ray: &Ray, num: i64) -> Option<Fx> {
         // Both are exact Q32.32 values.
         let den = self.normal.dot_wide_exact(ray.dir);
-        if den == 0 || (num != 0 && (num < 0) != (den < 0)) {
-            return None; // parallel, or the plane is behind the origin
+        // Parallel, the plane behind the origin, or the origin on the plane: a ray that starts
+        // on a plane leaves it (or runs along it) and meets it nowhere else.
+        if den == 0 || num == 0 || (num < 0) != (den < 0) {
+            return None;
         }
         let (num, den) = (num.unsigned_abs(), den.unsigned_abs());
         // t ≤ FAR  ⇔  |num| ≤ FAR·|den|; |den| ≤ 2³³ so the product fits.

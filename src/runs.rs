@@ -33,13 +33,11 @@ pub(crate) struct Runs<'a, const N: usize, const L: usize> {
 impl<'a, const N: usize, const L: usize> Runs<'a, N, L> {
     /// The runs of display row `row` of `camera`'s view of `scene`.
     pub(crate) fn new(scene: &'a Scene<N, L>, camera: &Camera, row: u16) -> Self {
-        // Objects past the 64th have no bit of their own and are always tried; bit 63 stands
-        // in for them, so that a run is never taken for empty while they exist.
-        let beyond = if scene.objects().len() > 64 {
-            1 << 63
-        } else {
-            0
-        };
+        // Objects past the 64th have no bit of their own and are always tried. Bit 63 then
+        // stands for them as well as for object 63, so it is never cleared: no run is taken
+        // for empty while they exist, and object 63 is simply tried with them.
+        let own_bits = if scene.objects().len() > 64 { 63 } else { 64 };
+        let beyond = if own_bits == 63 { 1 << 63 } else { 0 };
         let among = scene.seen_from_row(camera, row) & scene.present() | beyond;
         let mut runs = Runs {
             scene,
@@ -53,7 +51,7 @@ impl<'a, const N: usize, const L: usize> Runs<'a, N, L> {
             col: 0,
             cols: camera.cols(),
         };
-        for (index, object) in scene.objects().iter().enumerate().take(64) {
+        for (index, object) in scene.objects().iter().enumerate().take(own_bits) {
             match object.shape {
                 Shape::Sphere(sphere) if among & (1 << index) != 0 => {
                     if let Some(span) = camera.column_span(sphere.centre(), sphere.radius()) {
@@ -125,14 +123,14 @@ impl<'a, const N: usize, const L: usize> Runs<'a, N, L> {
 /// `last`, misses a plane of unit normal `normal` and Eq. 4.2 numerator `numerator` by
 /// pointing away from it or along it.
 ///
-/// A ray hits only if `n·u` is non-zero with the numerator's sign. Each component of a
+/// A ray hits only if the numerator is non-zero and `n·u` has its sign. Each component of a
 /// normalised direction `u` is within 2⁻¹⁶ of `w/‖w‖`, so `n·u` is within `‖n‖₁·2⁻¹⁶ < 2⁻¹⁵`
 /// of `n·w/‖w‖`, and `‖w‖ ≤ ‖w‖₁`: where `n·w > 2·‖w‖₁` (in raw units), `n·u > 0` for sure.
 /// `n·w` is linear along the run and `‖w‖₁` convex, so the ends decide, with twice the
 /// margin to spare.
 fn misses_all(normal: Vec3, numerator: i64, first: Vec3, last: Vec3) -> bool {
     if numerator == 0 {
-        return false; // the eye on the plane: leave it to the full test
+        return true; // the eye on the plane: every ray leaves it or runs along it
     }
     let l1 = |w: Vec3| {
         w.x.to_bits().unsigned_abs() as i64

@@ -247,8 +247,15 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// larger than the hit point's rounding (which grows with distance) and would detach
     /// shadows from the objects that cast them.
     pub(crate) fn shoot_from(&self, ray: &Ray, leaving: Option<usize>) -> Option<Hit> {
-        let skip = leaving.map_or(0, |i| 1u64.checked_shl(i as u32).unwrap_or(0));
-        self.shoot_among(ray, !skip)
+        // By index, not by a bit of `among`: objects past the 64th have no bit of their own.
+        let leaving = leaving.unwrap_or(usize::MAX);
+        self.nearest_among(ray, !0, |index, shape| {
+            if index == leaving {
+                None
+            } else {
+                shape.hit_distance(ray)
+            }
+        })
     }
 
     /// The objects that rays of display row `row` can meet, as a bit set for

@@ -1,11 +1,26 @@
 //! [`Sphere`] and the chapter's two-step ray–sphere intersection (section 4.4).
 
+use core::cmp::Ordering;
+
 use crate::error::Error;
 use crate::fx::{self, FAR, FRAC, Fx};
 use crate::hit::Hit;
 use crate::isqrt::isqrt;
 use crate::ray::Ray;
 use crate::vec3::Vec3;
+
+/// A near crossing at least this far ahead (a quarter of a unit) proves the origin outside
+/// the sphere, so the exact classification of [`Sphere::crossing_near_origin`] is needed only
+/// below it.
+///
+/// For an origin on or inside the sphere (`‖c − p_r‖ ≤ r`) the exact near crossing is at most
+/// 0, and the rounded one `t_close − a` exceeds it only through a computed `a` that came out
+/// too small. Then `a² ≥ t_close²·(1 − ε) − δ`: the direction's squared length is within
+/// `ε ≤ 2√3·2⁻¹⁶` of 1, and rounding `x_close` moves `d²` by `δ ≤ 2⁻⁵` for radii within
+/// [`LIMIT`](crate::LIMIT). With `t_close ≤ 2r ≤ 2048` the near crossing is thus at most
+/// `ε·t_close/2 + δ/(2·t_close)` plus a few units of 2⁻¹⁶: below 0.12 once `t_close ≥ ¼`, and
+/// below `t_close` always.
+const SURELY_OUTSIDE: Fx = Fx::from_bits(1 << 14);
 
 /// A sphere with centre `c` and radius `r > 0`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -81,10 +96,17 @@ impl Sphere {
     ///    `d = ‖x_close − c‖`. If `d > r` there is no hit.
     /// 2. Otherwise `a = √(r² − d²)` and the nearest hit is at `t_close − a`.
     ///
-    /// What the chapter leaves open: a ray whose origin is inside the sphere has
-    /// `t_close − a < 0` and leaves through `t_close + a`; a sphere wholly behind the origin
-    /// (both negative) is a miss, as is a hit beyond [`FAR`]; a tangent ray (`d = r`) hits at
-    /// `x_close`. `d²` and `r²` are compared exactly at 64 bits.
+    /// What the chapter leaves open, decided by where the origin lies, `‖c − p_r‖²` against
+    /// `r²` compared exactly at 64 bits:
+    /// - outside: the hit is `t_close − a` for a ray pointing towards the centre
+    ///   (`t_close > 0`); otherwise both crossings are behind the origin and it is a miss;
+    /// - inside: the ray leaves through `t_close + a`;
+    /// - on the surface: the ray meets the sphere again only if it points into it
+    ///   (`u_r·(c − p_r) > 0`, exactly), at `t_close + a`; one pointing away from the sphere
+    ///   or along it misses, so an eye on a surface does not see that surface at `t = 0`.
+    ///
+    /// A hit beyond [`FAR`] is a miss; a tangent ray (`d = r`) hits at `x_close`. `d²` and
+    /// `r²` are compared exactly at 64 bits.
     ///
     /// ```
     /// use fixray::{Fx, Ray, Sphere, Vec3};
@@ -120,14 +142,41 @@ impl Sphere {
         }
         // r² − d² ≤ r² ≤ 2²⁰·2³², so a fits Q16.16.
         let a = Fx::from_bits(isqrt(r2 - d2) as i32);
-        let mut t = t_close - a;
-        if t < Fx::ZERO {
-            t = t_close + a; // the origin is inside the sphere
-        }
-        if t < Fx::ZERO || t > FAR {
+        let near = t_close - a;
+        let t = if near >= SURELY_OUTSIDE {
+            near
+        } else {
+            self.crossing_near_origin(ray, to_centre, r2, t_close, a)?
+        };
+        if t > FAR {
             return None;
         }
         Some(t)
+    }
+
+    /// The crossing ahead of a ray whose near crossing `t_close − a` came out below
+    /// [`SURELY_OUTSIDE`]: the origin is classified exactly as outside, on or inside the
+    /// sphere (see [`Sphere::intersect`]).
+    #[cold]
+    fn crossing_near_origin(
+        &self,
+        ray: &Ray,
+        to_centre: Vec3,
+        r2: u64,
+        t_close: Fx,
+        a: Fx,
+    ) -> Option<Fx> {
+        match to_centre.length_squared_wide().cmp(&r2) {
+            // Both crossings are behind an outside origin unless the ray points towards the
+            // centre; then the near one is ahead, at 0 when rounding takes it below.
+            Ordering::Greater => (t_close > Fx::ZERO).then(|| (t_close - a).max(Fx::ZERO)),
+            // On the surface one crossing is the origin itself: the other is ahead only for a
+            // ray pointing into the sphere, and `t_close` may round a small positive to 0.
+            Ordering::Equal => {
+                (ray.dir.dot_wide(to_centre) > 0).then(|| (t_close + a).max(Fx::ZERO))
+            }
+            Ordering::Less => Some((t_close + a).max(Fx::ZERO)),
+        }
     }
 
     /// The hit at distance `t` along `ray`: its point and outward normal.
@@ -176,6 +225,81 @@ mod tests {
             .unwrap();
         assert_eq!(hit.t, Fx::from_num(2));
         assert_eq!(hit.point, Vec3::from_ints(0, 0, -12));
+    }
+
+    #[test]
+    fn from_the_surface_only_a_ray_into_the_sphere_meets_it() {
+        let pole = Vec3::from_ints(0, 0, -8); // the near pole of the ball
+        assert_eq!(ball().hit_distance(&ray(pole, Vec3::Z)), None, "away");
+        assert_eq!(ball().hit_distance(&ray(pole, Vec3::X)), None, "along");
+        assert_eq!(
+            ball().hit_distance(&ray(pole, -Vec3::Z)),
+            Some(Fx::from_num(4)),
+            "through to the far pole"
+        );
+        // The eye on the top of a large sphere: rays upward miss it, rays downward cross it.
+        let big = Sphere::new(Vec3::from_ints(0, -50, 0), Fx::from_num(50)).unwrap();
+        for k in 1..=64 {
+            let up = ray(Vec3::ZERO, Vec3::new(Fx::from_bits(k * 97), Fx::from_bits(k), -Fx::ONE));
+            assert_eq!(big.hit_distance(&up), None, "upward {k}");
+        }
+        // Steeper downward rays, whose chord is long against the rounding of d² (δ ≤ 2⁻¹⁰
+        // for r = 50): t_close + a is then within δ/(2·t_close) + 2⁻¹⁶·100 of the chord, below
+        // 2⁻⁸.
+        for k in 1..=32 {
+            let up = ray(Vec3::ZERO, Vec3::new(Fx::from_bits(k * 97), Fx::from_bits(k * 512), -Fx::ONE));
+            let down = Ray::new_unchecked(Vec3::ZERO, Vec3::new(up.dir.x, -up.dir.y, up.dir.z));
+            let t = big.hit_distance(&down).expect("downward rays cross the sphere");
+            // The chord from the pole: 2·r·sin(elevation) = 100·|u_y|.
+            let chord = Fx::from_num(100) * -down.dir.y;
+            assert!((t - chord).abs() <= Fx::from_bits(256), "downward {k}: {t} vs {chord}");
+        }
+    }
+
+    #[test]
+    fn the_near_crossing_is_taken_without_classifying_only_from_outside() {
+        // Origins on, just inside and just outside many spheres, in many directions: where
+        // `hit_distance` takes its shortcut the exact classification agrees with it.
+        let mut rng = crate::xorshift::XorShift(0x5eed_0f5a);
+        for _ in 0..20_000 {
+            let radius = Fx::from_bits((rng.next() % (1024 << 16)) as i32 + 1);
+            let centre = Vec3::from_ints(0, 0, 0);
+            let sphere = Sphere::new(centre, radius).unwrap();
+            // A point at the radius along an axis, or at (3/5, 4/5) of it, nudged by a few
+            // units either way: on, just inside or just outside the surface.
+            let nudge = Fx::from_bits((rng.next() % 9) as i32 - 4);
+            let origin = if rng.next() % 2 == 0 {
+                Vec3::new(Fx::ZERO, radius + nudge, Fx::ZERO)
+            } else {
+                let fifth = radius / 5;
+                Vec3::new(fifth * 3, fifth * 4 + nudge, Fx::ZERO)
+            };
+            let dir = Vec3::new(
+                Fx::from_bits(rng.next() as i32 >> 12),
+                Fx::from_bits(rng.next() as i32 >> 12),
+                Fx::from_bits(rng.next() as i32 >> 12),
+            );
+            let Some(dir) = dir.try_normalize() else {
+                continue;
+            };
+            let ray = Ray::new_unchecked(origin, dir);
+            let to_centre = centre - origin;
+            let t_close = dir.dot_exact(to_centre);
+            let d2 = (dir.scale_unit(t_close) - to_centre).length_squared_wide();
+            let r2 = fx::wide_mul(radius.to_bits(), radius.to_bits()) as u64;
+            if d2 > r2 || t_close < -radius {
+                continue;
+            }
+            let a = Fx::from_bits(isqrt(r2 - d2) as i32);
+            let near = t_close - a;
+            if near >= SURELY_OUTSIDE {
+                assert_eq!(
+                    to_centre.length_squared_wide().cmp(&r2),
+                    Ordering::Greater,
+                    "r {radius}, nudge {nudge}, dir {dir:?}: near {near}"
+                );
+            }
+        }
     }
 
     #[test]

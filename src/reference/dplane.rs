@@ -121,15 +121,16 @@ impl<F: Real> DPlane<F> {
     ///
     /// A ray parallel to the plane (`n·u_r = 0`) misses, even one lying in it; so does a hit
     /// behind the origin (`t < 0`) or beyond [`FAR`], and on a rectangle one whose hit point
-    /// lies outside it. A ray starting on the plane hits it at `t = 0`. The hit's `object`
-    /// is 0.
+    /// lies outside it. A ray starting on the plane (`n·(p_r − p_0) = 0`) misses too: it
+    /// leaves the plane at once, or runs along it. The hit's `object` is 0.
     #[must_use]
     pub fn intersect(&self, ray: &DRay<F>) -> Option<DHit<F>> {
         let den = self.normal.dot(ray.dir());
-        if den == F::ZERO {
+        let height = self.distance(ray.origin());
+        if den == F::ZERO || height == F::ZERO {
             return None;
         }
-        let t = -self.distance(ray.origin()) / den;
+        let t = -height / den;
         if !(F::ZERO..=F::from_f64(FAR)).contains(&t) {
             return None;
         }
@@ -187,11 +188,17 @@ mod tests {
     }
 
     #[test]
-    fn behind_misses_and_on_the_plane_hits_at_zero() {
+    fn behind_misses_and_so_does_a_ray_from_the_plane() {
         let r = ray(DVec3::new(1.0, 1.0, 0.0), DVec3::X);
         assert_eq!(wall(0.0, DVec3::X).intersect(&r), None);
-        let on = ray(DVec3::new(4.0, 1.0, 0.0), DVec3::X);
-        assert_eq!(wall(4.0, DVec3::X).intersect(&on).map(|h| h.t), Some(0.0));
+        // From a point of the wall, out through it, back from it or along it: no hit.
+        for toward in [DVec3::X, -DVec3::X, DVec3::Y, DVec3::new(1.0, 1.0, 0.0)] {
+            let on = ray(DVec3::new(4.0, 1.0, 0.0), toward);
+            assert_eq!(wall(4.0, DVec3::X).intersect(&on), None, "{toward:?}");
+        }
+        // Just off it, the wall is met at once.
+        let near = ray(DVec3::new(4.0 - 1e-9, 1.0, 0.0), DVec3::X);
+        assert!(wall(4.0, DVec3::X).intersect(&near).is_some());
     }
 
     #[test]

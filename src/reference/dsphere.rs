@@ -40,9 +40,16 @@ impl<F: Real> DSphere<F> {
     ///
     /// 1. Closest approach: `t_close = u_r·(c − p_r)`, `x_close = p_r + t_close·u_r`, and
     ///    `d² = ‖x_close − c‖²`. If `d² > r²` the ray passes the sphere by: a miss.
-    /// 2. Hit: `a = √(r² − d²)` and the ray crosses the surface at `t_close ± a`. The nearer
-    ///    crossing `t_close − a` is taken, unless it is behind the origin (`< 0`), which means
-    ///    the origin is inside the sphere and the ray leaves it at `t_close + a`.
+    /// 2. Hit: `a = √(r² − d²)` and the ray crosses the surface at `t_close ± a`.
+    ///
+    /// Which crossing is ahead follows from the quadratic the crossings solve,
+    /// `t² − 2·t_close·t + s = 0` with `s = ‖p_r − c‖² − r²`: the product of its roots is `s`.
+    /// Outside the sphere (`s > 0`) both have the sign of `t_close`, and the near one,
+    /// `t_close − a`, is the hit when they are ahead. Inside (`s < 0`) they straddle the
+    /// origin and the ray leaves at `t_close + a`. On the surface (`s = 0`) one root is the
+    /// origin itself, which does not count: the other, `2·t_close`, is a hit only when the ray
+    /// points into the sphere (`t_close > 0`), so a ray leaving the surface or running along
+    /// it misses.
     ///
     /// A hit behind the origin (`t < 0`) or beyond [`FAR`] is a miss. A ray that just grazes
     /// the sphere (`d² = r²`) hits it once, at `x_close`. The hit normal `(x − c)/r` points
@@ -57,10 +64,17 @@ impl<F: Real> DSphere<F> {
             return None;
         }
         let a = (r2 - d2).sqrt();
-        let mut t = t_close - a;
-        if t < F::ZERO {
-            t = t_close + a;
-        }
+        let s = (ray.origin() - self.centre).length_squared() - r2;
+        let t = if s > F::ZERO {
+            if t_close <= F::ZERO {
+                return None;
+            }
+            t_close - a
+        } else if s < F::ZERO || t_close > F::ZERO {
+            t_close + a
+        } else {
+            return None;
+        };
         if !(F::ZERO..=F::from_f64(FAR)).contains(&t) {
             return None;
         }
@@ -114,6 +128,21 @@ mod tests {
         assert_eq!(hit.t, 1.0);
         assert_eq!(hit.point, DVec3::new(0.0, 0.0, -6.0));
         assert_eq!(hit.normal, -DVec3::Z, "the normal still points outward");
+    }
+
+    #[test]
+    fn from_the_surface_only_a_ray_into_the_sphere_meets_it() {
+        // The origin on the near pole, (0, 0, −4).
+        let out = DRay::new(DVec3::new(0.0, 0.0, -4.0), DVec3::Z).unwrap();
+        assert_eq!(ahead().intersect(&out), None, "pointing away");
+        let along = DRay::new(DVec3::new(0.0, 0.0, -4.0), DVec3::X).unwrap();
+        assert_eq!(ahead().intersect(&along), None, "along the tangent plane");
+        let hit = ahead().intersect(&down_z(0.0, 0.0, -4.0)).unwrap();
+        assert_eq!(hit.t, 2.0, "through the sphere to the far pole");
+        // Slanted in by 45°: the chord to the surface is √2 long.
+        let slant = DRay::new(DVec3::new(0.0, 0.0, -4.0), DVec3::new(1.0, 0.0, -1.0)).unwrap();
+        let hit = ahead().intersect(&slant).unwrap();
+        assert!((hit.t - 2f64.sqrt()).abs() < 1e-12, "{}", hit.t);
     }
 
     #[test]
