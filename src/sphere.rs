@@ -240,19 +240,30 @@ mod tests {
         // The eye on the top of a large sphere: rays upward miss it, rays downward cross it.
         let big = Sphere::new(Vec3::from_ints(0, -50, 0), Fx::from_num(50)).unwrap();
         for k in 1..=64 {
-            let up = ray(Vec3::ZERO, Vec3::new(Fx::from_bits(k * 97), Fx::from_bits(k), -Fx::ONE));
+            let up = ray(
+                Vec3::ZERO,
+                Vec3::new(Fx::from_bits(k * 97), Fx::from_bits(k), -Fx::ONE),
+            );
             assert_eq!(big.hit_distance(&up), None, "upward {k}");
         }
         // Steeper downward rays, whose chord is long against the rounding of d² (δ ≤ 2⁻¹⁰
         // for r = 50): t_close + a is then within δ/(2·t_close) + 2⁻¹⁶·100 of the chord, below
         // 2⁻⁸.
         for k in 1..=32 {
-            let up = ray(Vec3::ZERO, Vec3::new(Fx::from_bits(k * 97), Fx::from_bits(k * 512), -Fx::ONE));
+            let up = ray(
+                Vec3::ZERO,
+                Vec3::new(Fx::from_bits(k * 97), Fx::from_bits(k * 512), -Fx::ONE),
+            );
             let down = Ray::new_unchecked(Vec3::ZERO, Vec3::new(up.dir.x, -up.dir.y, up.dir.z));
-            let t = big.hit_distance(&down).expect("downward rays cross the sphere");
+            let t = big
+                .hit_distance(&down)
+                .expect("downward rays cross the sphere");
             // The chord from the pole: 2·r·sin(elevation) = 100·|u_y|.
             let chord = Fx::from_num(100) * -down.dir.y;
-            assert!((t - chord).abs() <= Fx::from_bits(256), "downward {k}: {t} vs {chord}");
+            assert!(
+                (t - chord).abs() <= Fx::from_bits(256),
+                "downward {k}: {t} vs {chord}"
+            );
         }
     }
 

@@ -51,3 +51,89 @@ fn orbiting_views_equal_their_pixels_traced_one_by_one() {
         rows_match_tracing_each_pixel(&scene, &camera);
     }
 }
+
+/// A scene of `N` objects whose last ones, past the 64th, are in view, cast shadows on one
+/// another and on the ground, and one of which is a mirror: the culling's 64-bit masks have no
+/// bit of their own for them.
+fn crowded<const N: usize>() -> fixray::Scene<N> {
+    use fixray::{Fx, Light, Material, Plane, Sphere, Vec3};
+    let light = Light::new(Vec3::from_ints(-10, 20, 10), Fx::from_num(0.8)).unwrap();
+    let mut scene: fixray::Scene<N> =
+        fixray::Scene::new(light, Fx::from_num(0.2), Rgb::new(30, 60, 200)).unwrap();
+    let ball = |x: i16, y: i16, z: i16, r: f32| {
+        Sphere::new(Vec3::from_ints(x, y, z), Fx::from_num(r)).unwrap()
+    };
+    scene
+        .add_plane(
+            Plane::new(Vec3::from_ints(0, -4, 0), Vec3::Y).unwrap(),
+            Rgb::new(120, 120, 120),
+        )
+        .unwrap();
+    // A grid of small spheres, some in view and some off to the sides, up to the 64th object.
+    let mut i = 0i16;
+    while scene.objects().len() < 64 {
+        let (x, z) = (-40 + 6 * (i % 14), -10 - 7 * (i / 14));
+        scene
+            .add_sphere(ball(x, -3, z, 0.9), Rgb::new(200, 40 + 3 * i as u8, 40))
+            .unwrap();
+        i += 1;
+    }
+    let mirror = Material::new(
+        Rgb::WHITE,
+        Fx::from_num(0.2),
+        Fx::ONE,
+        50,
+        Fx::from_num(0.7),
+    )
+    .unwrap();
+    // Past the 64th: a large mirror in the middle, and more spheres around and above it.
+    scene.add_sphere(ball(0, 0, -16, 3.5), mirror).unwrap();
+    let mut k = 0i16;
+    while scene.objects().len() < N {
+        let (x, y) = (-9 + 3 * (k % 7), 5 + 2 * (k / 7 % 4));
+        scene
+            .add_sphere(
+                ball(x, y, -20 - k / 28, 0.7),
+                Rgb::new(40, 200, 60 + k as u8),
+            )
+            .unwrap();
+        k += 1;
+    }
+    scene
+}
+
+#[test]
+fn scenes_past_64_objects_equal_their_pixels_traced_one_by_one() {
+    let camera = fixray::Camera::look_at(
+        [0.0, 3.0, 6.0],
+        [0.0, -1.0, -16.0],
+        [0.0, 1.0, 0.0],
+        60.0,
+        96,
+        72,
+    )
+    .unwrap();
+    let mut seventy = crowded::<70>();
+    let mut one_thirty = crowded::<130>();
+    for shadows in [true, false] {
+        seventy.set_shadows(shadows);
+        one_thirty.set_shadows(shadows);
+        rows_match_tracing_each_pixel(&seventy, &camera);
+        rows_match_tracing_each_pixel(&one_thirty, &camera);
+    }
+    // The objects past the 64th are really in view.
+    let seen = |scene: &fixray::Scene<130>| {
+        let mut seen = [false; 130];
+        for row in 0..camera.rows() {
+            for col in 0..camera.cols() {
+                if let Some(hit) = scene.shoot(&camera.ray(row, col)) {
+                    seen[hit.object] = true;
+                }
+            }
+        }
+        seen
+    };
+    let seen = seen(&one_thirty);
+    assert!(seen[64], "the mirror");
+    assert!(seen[65..].iter().filter(|&&s| s).count() > 20);
+}
