@@ -279,7 +279,7 @@ mod tests {
             // A point at the radius along an axis, or at (3/5, 4/5) of it, nudged by a few
             // units either way: on, just inside or just outside the surface.
             let nudge = Fx::from_bits((rng.next() % 9) as i32 - 4);
-            let origin = if rng.next() % 2 == 0 {
+            let origin = if rng.next().is_multiple_of(2) {
                 Vec3::new(Fx::ZERO, radius + nudge, Fx::ZERO)
             } else {
                 let fifth = radius / 5;
@@ -298,18 +298,20 @@ mod tests {
             let t_close = dir.dot_exact(to_centre);
             let d2 = (dir.scale_unit(t_close) - to_centre).length_squared_wide();
             let r2 = fx::wide_mul(radius.to_bits(), radius.to_bits()) as u64;
-            if d2 > r2 || t_close < -radius {
-                continue;
-            }
-            let a = Fx::from_bits(isqrt(r2 - d2) as i32);
-            let near = t_close - a;
-            if near >= SURELY_OUTSIDE {
-                assert_eq!(
-                    to_centre.length_squared_wide().cmp(&r2),
-                    Ordering::Greater,
-                    "r {radius}, nudge {nudge}, dir {dir:?}: near {near}"
-                );
-            }
+            // The same steps with every origin classified exactly.
+            let classified = if d2 > r2 || t_close < -radius {
+                None
+            } else {
+                let a = Fx::from_bits(isqrt(r2 - d2) as i32);
+                sphere
+                    .crossing_near_origin(&ray, to_centre, r2, t_close, a)
+                    .filter(|&t| t <= FAR)
+            };
+            assert_eq!(
+                sphere.hit_distance(&ray),
+                classified,
+                "r {radius}, origin {origin:?}, dir {dir:?}"
+            );
         }
     }
 
