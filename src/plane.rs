@@ -98,6 +98,19 @@ impl Plane {
     /// a unit vector. For `const` scenes.
     #[must_use]
     pub const fn new_unchecked(point: Vec3, normal: Vec3) -> Self {
+        let limit = crate::LIMIT.to_bits();
+        debug_assert!(
+            point.x.to_bits().abs() <= limit
+                && point.y.to_bits().abs() <= limit
+                && point.z.to_bits().abs() <= limit,
+            "Plane::new_unchecked: the point must lie within ±1024"
+        );
+        // A normalised vector's components are each within 2⁻¹⁶ of exact, which keeps its
+        // squared length within 2√3·2⁻¹⁶ of 1: 2⁻¹³ leaves room to spare.
+        debug_assert!(
+            normal.length_squared_wide().abs_diff(1 << 32) <= 1 << 19,
+            "Plane::new_unchecked: the normal must be a unit vector"
+        );
         Plane {
             point,
             normal,

@@ -58,6 +58,17 @@ impl Sphere {
     /// within ±1024). For `const` scenes.
     #[must_use]
     pub const fn new_unchecked(centre: Vec3, radius: Fx) -> Self {
+        let limit = crate::LIMIT.to_bits();
+        debug_assert!(
+            radius.to_bits() > 0 && radius.to_bits() <= limit,
+            "Sphere::new_unchecked: the radius must lie in (0, 1024]"
+        );
+        debug_assert!(
+            centre.x.to_bits().abs() <= limit
+                && centre.y.to_bits().abs() <= limit
+                && centre.z.to_bits().abs() <= limit,
+            "Sphere::new_unchecked: the centre must lie within ±1024"
+        );
         // r in raw units lies in [2^k, 2^(k+1)); 2^(31+k)/r then lies in (2³⁰, 2³¹].
         let r = if radius.to_bits() > 0 {
             radius.to_bits() as u64

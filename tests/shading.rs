@@ -332,7 +332,7 @@ fn materials_and_lights_built_by_hand_out_of_range_do_not_panic() {
         }),
     };
     scene
-        .add_plane(Plane::new(Vec3::ZERO, Vec3::Y).unwrap(), wild)
+        .add_plane(Plane::new(v(0.0, -1.0, 0.0), Vec3::Y).unwrap(), wild)
         .unwrap();
     scene
         .add_sphere(Sphere::new(v(0.0, 2.0, -5.0), fx(1.0)).unwrap(), wild)
