@@ -24,7 +24,8 @@ pub const MAX_PIXELS: u16 = 4096;
 /// 2⁻¹⁵ · B = ½. Narrow fields of view meet the budget at `F ≈ B`, wide ones at `F ≈ R²/B`.
 const RAY_BUDGET_PX: u32 = 16_384;
 
-/// The smallest value an `f32` camera length may round to: one Q16.16 step.
+/// The range of a camera's `f32` lengths, as errors state it: at least one Q16.16 step
+/// after rounding, at most 1024.
 const CAMERA_RANGE: &str = "2⁻¹⁶ (one Q16.16 step) to 1024";
 
 /// A camera: a viewpoint and a screen of `cols × rows` pixels in front of it.
@@ -49,10 +50,10 @@ const CAMERA_RANGE: &str = "2⁻¹⁶ (one Q16.16 step) to 1024";
 /// | rows × cols | narrowest | widest |
 /// |---|---|---|
 /// | 1 × 1 | 0.004° | 179.99° |
-/// | 128 × 160 | 0.45° | 178.8° |
-/// | 240 × 320 | 0.84° | 177.6° |
-/// | 1080 × 1920 | 3.8° | 164.3° |
-/// | 4096 × 4096 | 14.7° | 151.0° |
+/// | 128 × 160 | 0.448° | 178.85° |
+/// | 240 × 320 | 0.840° | 177.67° |
+/// | 1080 × 1920 | 3.793° | 164.31° |
+/// | 4096 × 4096 | 14.721° | 151.03° |
 ///
 /// Outside them the constructors return [`Error::FieldOfViewTooNarrow`] or
 /// [`Error::FieldOfViewTooWide`] with the limit for that screen.
@@ -475,8 +476,12 @@ impl Camera {
     /// The centre of pixel (`row`, `col`) on the view screen, in world units (display
     /// indexing: row 0 at the top), rounded once to Q16.16.
     ///
-    /// Rows and columns outside the screen continue its plane; a point beyond ±32 768 in a
-    /// coordinate saturates there.
+    /// It lies on the pixel's ray ([`Camera::ray`]): the camera's own direction towards the
+    /// pixel, in pixel units, scaled by the screen's distance over the view distance. Both
+    /// are as rounded to Q16.16, so the point carries the view distance's rounding, a
+    /// relative 2⁻¹⁷/F for a view distance of F pixels. Rows and columns outside the screen
+    /// continue its plane; a coordinate beyond the Q16.16 range saturates (at −32 768 or just
+    /// below 32 768), the others are unaffected.
     #[must_use]
     pub fn pixel_centre(&self, row: u16, col: u16) -> Vec3 {
         let (wide, denom) = self.towards_wide(row, col, 0, 0, 1);
@@ -561,7 +566,10 @@ impl Camera {
         let high = ratio(x + radius, if x + radius >= Fx::ZERO { near } else { far });
         let low = ratio(x - radius, if x - radius >= Fx::ZERO { far } else { near });
         let distance = self.forward.length().to_bits() as i64;
-        // f · ratio in whole pixels: Q16.16 × Q16.16 / 2³².
+        // f · ratio in whole pixels: Q16.16 × Q16.16 / 2³². The ray budget keeps f at most
+        // 16 384 pixels (raw 2³⁰), and |ratio| < 2³²·² (a numerator below 4572, the eye and
+        // the centre being within ±1024, over a denominator of at least 1/16): the product
+        // is below 2⁶³.
         let column = |r: i64| {
             let offset = (distance * r) >> 32;
             (offset + self.cols as i64 / 2).clamp(-8, MAX_PIXELS as i64 + 8) as i16
