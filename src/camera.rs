@@ -580,7 +580,7 @@ impl Camera {
     /// The ray through sample (`sx`, `sy`) of an `n × n` grid of sub-pixel centres in pixel
     /// (`row`, `col`), for supersampling: sample `(s, t)` sits at
     /// `(col + (2s + 1)/(2n), row + (2t + 1)/(2n))`. `n` is clamped to 1..=16; `n = 1` is
-    /// [`Camera::ray`].
+    /// [`Camera::ray`]. Like it, every `u16` row and column is allowed.
     #[must_use]
     pub fn sample_ray(&self, row: u16, col: u16, sx: u8, sy: u8, n: u8) -> Ray {
         let dir = self
@@ -676,6 +676,43 @@ mod tests {
             let (da, db) = (a.ray(row, col).dir, b.ray(row, col).dir);
             for (p, q) in [(da.x, db.x), (da.y, db.y), (da.z, db.z)] {
                 assert!((p - q).abs() <= Fx::from_bits(4), "{da:?} vs {db:?}");
+            }
+        }
+    }
+
+    #[test]
+    fn directions_of_the_screen_fit_without_scaling() {
+        // The ray budget's promise that `towards_sample` relies on for the rows and columns of
+        // the screen: every sample's direction is at most 16 384 pixels a component, so it is
+        // rounded as it is, never scaled. Tried at the budget's edges.
+        let (o, ahead, up) = ([0.0; 3], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]);
+        let cameras = [
+            Camera::look_at(o, ahead, up, 0.841, 320, 240).unwrap(),
+            Camera::look_at(o, ahead, up, 14.722, 4096, 4096).unwrap(),
+            Camera::look_at(o, ahead, up, 151.028, 4096, 4096).unwrap(),
+            Camera::look_at(
+                [1.0, 2.0, 3.0],
+                [-4.0, 0.5, -9.0],
+                [0.1, 1.0, 0.2],
+                15.0,
+                4096,
+                4096,
+            )
+            .unwrap(),
+            Camera::pinhole(1.0, 8.0, 4.0, 2048, 1024).unwrap(),
+            Camera::pinhole(8.0, 1.0, 16.0, 1024, 2048).unwrap(),
+        ];
+        for camera in cameras {
+            let (rows, cols) = (camera.rows(), camera.cols());
+            for (row, col) in [(0, 0), (0, cols - 1), (rows - 1, 0), (rows - 1, cols - 1)] {
+                for (s, t, n) in [(0, 0, 1), (0, 0, 16), (15, 15, 16), (0, 15, 16)] {
+                    let (wide, denom) = camera.towards_wide(row, col, s, t, n);
+                    assert_eq!(
+                        Camera::shift_to_fit(&wide, denom),
+                        0,
+                        "{camera:?} ({row}, {col})"
+                    );
+                }
             }
         }
     }
