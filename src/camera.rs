@@ -11,8 +11,22 @@ use crate::vec3::Vec3;
 /// Largest screen size in pixels, per side.
 pub const MAX_PIXELS: u16 = 4096;
 
-/// The view distance in pixels may be at most this, so ray directions stay well inside Q16.16.
-const MAX_VIEW_DISTANCE_PX: f32 = 8192.0;
+/// The ray budget in pixels, `B`: with `F` the view distance and `R` the distance from the
+/// screen's centre to its corner, both in pixels and as rounded to Q16.16, every camera has
+/// `F² + R² ≤ B·F`.
+///
+/// Two things follow. The direction towards any point of the screen is `√(F² + r²) ≤ B`
+/// pixels long (as `F ≤ B`), so its components fit Q16.16 with a bit to spare, and every
+/// product and squared length made from it fits 64 bits. And every ray is good to half a
+/// pixel: a Q16.16 unit direction is within about 2⁻¹⁵ radians of the exact one (its own
+/// rounding and that of the camera's basis), and an angle `δ` at a point `r` pixels from the
+/// screen's centre moves the ray by `δ·(F² + r²)/F` pixels on the screen, at most
+/// 2⁻¹⁵ · B = ½. Narrow fields of view meet the budget at `F ≈ B`, wide ones at `F ≈ R²/B`.
+const RAY_BUDGET_PX: u32 = 16_384;
+
+/// The range of a camera's `f32` lengths, as errors state it: at least one Q16.16 step
+/// after rounding, at most 1024.
+const CAMERA_RANGE: &str = "2⁻¹⁶ (one Q16.16 step) to 1024";
 
 /// A camera: a viewpoint and a screen of `cols × rows` pixels in front of it.
 ///
@@ -24,6 +38,25 @@ const MAX_VIEW_DISTANCE_PX: f32 = 8192.0;
 /// stores its screen scaled to make one pixel one unit wide. The pixel-centre offsets are then
 /// exact half-integers, and Q16.16 rounding of a small pixel pitch (`w/N`) never accumulates
 /// across a row.
+///
+/// # Limits
+///
+/// Every constructor checks the camera it builds as rounded to Q16.16 — the view distance in
+/// pixels, the pixel aspect and the basis — not the `f32` inputs. The view distance `F` and
+/// the screen's half-diagonal `R` (both in pixels) must satisfy `F² + R² ≤ 16 384·F`, which
+/// keeps every ray of the screen within half a pixel of the exact one and every intermediate
+/// inside its integer type. In fields of view (vertical, for square pixels):
+///
+/// | rows × cols | narrowest | widest |
+/// |---|---|---|
+/// | 1 × 1 | 0.004° | 179.99° |
+/// | 128 × 160 | 0.448° | 178.85° |
+/// | 240 × 320 | 0.840° | 177.67° |
+/// | 1080 × 1920 | 3.793° | 164.31° |
+/// | 4096 × 4096 | 14.721° | 151.03° |
+///
+/// Outside them the constructors return [`Error::FieldOfViewTooNarrow`] or
+/// [`Error::FieldOfViewTooWide`] with the limit for that screen.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Camera {
     eye: Vec3,
@@ -33,8 +66,11 @@ pub struct Camera {
     right: Vec3,
     /// One pixel towards increasing display row (down the picture).
     down: Vec3,
-    /// World units per pixel column on the screen, for [`Camera::pixel_centre`].
-    pitch: Fx,
+    /// The view distance in pixels, as `forward` was scaled to it.
+    view: Fx,
+    /// The distance from the eye to the screen in world units, for [`Camera::pixel_centre`]:
+    /// a direction in pixel units times `screen / view` is a point of the screen.
+    screen: Fx,
     cols: u16,
     rows: u16,
 }
@@ -53,7 +89,8 @@ fn check_resolution(cols: u16, rows: u16) -> Result<(), Error> {
     Ok(())
 }
 
-/// A positive, finite `f32` setup value, converted to Q16.16 within `±max`.
+/// A positive, finite `f32` setup length, converted to Q16.16: at most `max`, and not so small
+/// that it rounds to zero.
 fn positive(value: f32, max: f32, what: &'static str) -> Result<Fx, Error> {
     if !value.is_finite() {
         return Err(Error::NotFinite { what });
@@ -61,59 +98,170 @@ fn positive(value: f32, max: f32, what: &'static str) -> Result<Fx, Error> {
     if value <= 0.0 {
         return Err(Error::DegenerateCamera { why: what });
     }
-    fx::fx_from_f32_within(value, Fx::from_num(max), "the camera's limits", what)
+    let rounded = fx::fx_from_f32_within(value, Fx::from_num(max), CAMERA_RANGE, what)?;
+    if rounded == Fx::ZERO {
+        return Err(Error::OutOfRange {
+            what,
+            range: CAMERA_RANGE,
+        });
+    }
+    Ok(rounded)
+}
+
+/// A view distance of `view` pixels, worked out in `f32` at set-up, in Q16.16.
+///
+/// Past the budget (or infinite, for a vanishing field of view) it is clamped to just past it,
+/// and below zero to zero, so that [`Camera::checked`] refuses it with the field of view the
+/// screen allows; in between it is the rounded value.
+fn view_distance(view: f32) -> Result<Fx, Error> {
+    let past = (RAY_BUDGET_PX + 1) as f32;
+    // NaN cannot arise from the finite, positive inputs; it would clamp to 0 and be refused.
+    let clamped = if view.is_nan() {
+        0.0
+    } else {
+        view.clamp(0.0, past)
+    };
+    fx::fx_from_f32_within(
+        clamped,
+        Fx::from_num(past),
+        CAMERA_RANGE,
+        "view distance in pixels",
+    )
+}
+
+/// Refuses a view distance `view` (pixels) and pixel aspect `aspect` (the length of one row
+/// step, pixels) that break the ray budget ([`RAY_BUDGET_PX`]) for `cols × rows` pixels; the
+/// error names the field of view the screen allows.
+fn check_budget(view: Fx, aspect: Fx, cols: u16, rows: u16) -> Result<(), Error> {
+    // 4·(F² + R²) ≤ 4·B·F in units of 2⁻³² px², exactly: R² = (cols/2)² + (rows·aspect/2)².
+    let (f, a) = (
+        view.to_bits().max(0) as u128,
+        aspect.to_bits().max(0) as u128,
+    );
+    let (c, r) = (cols as u128, rows as u128);
+    let lhs = 4 * f * f + ((c * c) << 32) + r * r * a * a;
+    // 4·B·F in the same units: B·2¹⁶ times F's raw value, four times.
+    let rhs = ((4 * RAY_BUDGET_PX as u128) << FRAC) * f;
+    if lhs <= rhs {
+        return Ok(());
+    }
+    // The limits, in f64 at set-up: F² − B·F + R² ≤ 0 between the roots (B ∓ √(B² − 4R²))/2.
+    let half_height = rows as f64 * aspect.to_num::<f64>() / 2.0;
+    let half_width = cols as f64 / 2.0;
+    let b = RAY_BUDGET_PX as f64;
+    let discriminant = b * b - 4.0 * (half_width * half_width + half_height * half_height);
+    if discriminant < 0.0 {
+        return Err(Error::DegenerateCamera {
+            why: "the screen is more than 16 384 pixels across its diagonal (pixels too tall)",
+        });
+    }
+    let root = libm::sqrt(discriminant);
+    let fov = |distance: f64| 2.0 * libm::atan(half_height / distance).to_degrees() * 1000.0;
+    if view.to_num::<f64>() >= b / 2.0 {
+        Err(Error::FieldOfViewTooNarrow {
+            min_millidegrees: libm::ceil(fov((b + root) / 2.0)) as u32,
+        })
+    } else {
+        Err(Error::FieldOfViewTooWide {
+            max_millidegrees: libm::floor(fov((b - root) / 2.0)) as u32,
+        })
+    }
 }
 
 impl Camera {
+    /// The camera at `eye` looking along the unit vector `dir` at a screen `view` pixels
+    /// away, with one pixel's steps `right` and `down`, `screen` world units from the eye:
+    /// built from those rounded values and refused if they break the ray budget.
+    #[allow(clippy::too_many_arguments)]
+    fn checked(
+        eye: Vec3,
+        dir: Vec3,
+        view: Fx,
+        (right, down): (Vec3, Vec3),
+        screen: Fx,
+        cols: u16,
+        rows: u16,
+    ) -> Result<Self, Error> {
+        check_resolution(cols, rows)?;
+        check_budget(view, down.length(), cols, rows)?;
+        Ok(Camera {
+            eye,
+            forward: dir.scale(view),
+            right,
+            down,
+            view,
+            screen,
+            cols,
+            rows,
+        })
+    }
+
     /// The chapter's pinhole camera: the viewpoint at the origin looking down −z, a view
     /// screen `w × h` (world units) at distance `z_p`, split into `rows × cols` pixels.
     ///
     /// Pixel `(i, j)` of the chapter (row `i` counted upward) has its centre at
     /// `p_ij = c − (w/2, h/2) + (w/N·(j + ½), h/M·(i + ½))` with `c = (0, 0, −z_p)`.
     ///
+    /// `w`, `h` and `z_p` must lie in (0, 1024] and the pixel pitches `w/cols` and `h/rows`
+    /// must round to at least 2⁻¹⁶ (else [`Error::OutOfRange`]); pixels may be at most four
+    /// times taller than wide or wider than tall. The view distance `z_p·cols/w` in pixels is
+    /// held to the ray budget of [`Camera`]'s limits: a screen that subtends too narrow or
+    /// too wide a field of view for its number of pixels is refused with the limit.
+    ///
     /// ```
-    /// use fixray::{Camera, Vec3};
+    /// use fixray::{Camera, Error, Vec3};
     /// // The chapter's M = 3 by N = 5 screen, 5 × 3 units wide and high, one unit away.
     /// let cam = Camera::pinhole(5.0, 3.0, 1.0, 3, 5).unwrap();
     /// // Chapter pixel (0, 0) is bottom left: display row 2, column 0.
     /// assert_eq!(cam.pixel_centre(2, 0), Vec3::from_ints(-2, -1, -1));
+    /// // A screen a millionth of a pixel from the eye has no view.
+    /// assert!(matches!(
+    ///     Camera::pinhole(1.0, 1.0, 1e-6, 1, 1),
+    ///     Err(Error::OutOfRange { what: "screen distance", .. })
+    /// ));
     /// ```
     pub fn pinhole(w: f32, h: f32, z_p: f32, rows: u16, cols: u16) -> Result<Self, Error> {
         check_resolution(cols, rows)?;
         positive(w, 1024.0, "screen width")?;
         positive(h, 1024.0, "screen height")?;
-        positive(z_p, 1024.0, "screen distance")?;
+        let screen = positive(z_p, 1024.0, "screen distance")?;
         let pitch_x = w / cols as f32;
         let pitch_y = h / rows as f32;
-        let forward_px = positive(
-            z_p / pitch_x,
-            MAX_VIEW_DISTANCE_PX,
-            "screen distance in pixels",
-        )?;
+        positive(pitch_x, 1024.0, "pixel width (screen width / cols)")?;
+        positive(pitch_y, 1024.0, "pixel height (screen height / rows)")?;
         let aspect = pitch_y / pitch_x;
         if !(0.25..=4.0).contains(&aspect) {
             return Err(Error::DegenerateCamera {
                 why: "pixels more than four times taller than wide, or wider than tall",
             });
         }
-        let down_px = Fx::from_num(aspect);
-        Ok(Camera {
-            eye: Vec3::ZERO,
-            forward: Vec3::new(Fx::ZERO, Fx::ZERO, -forward_px),
-            right: Vec3::X,
-            down: Vec3::new(Fx::ZERO, -down_px, Fx::ZERO),
-            pitch: Fx::from_num(pitch_x),
+        let down = fx::fx_from_f32_within(aspect, Fx::from_num(4), "1/4 to 4", "pixel aspect")?;
+        Camera::checked(
+            Vec3::ZERO,
+            Vec3::new(Fx::ZERO, Fx::ZERO, -Fx::ONE),
+            view_distance(z_p / pitch_x)?,
+            (Vec3::X, Vec3::new(Fx::ZERO, -down, Fx::ZERO)),
+            screen,
             cols,
             rows,
-        })
+        )
     }
 
     /// The general camera: at `eye`, looking at `target`, with `up` giving the upward
     /// direction of the picture and a vertical field of view of `fov_y_degrees`.
     ///
-    /// Pixels are square. The screen sits one unit in front of the eye, `2·tan(fov/2)` high.
-    /// Degenerate input — `target == eye`, `up` zero or parallel to the view, a field of view
-    /// outside (0°, 180°), no pixels — is an error.
+    /// Pixels are square. The screen sits one unit in front of the eye, `2·tan(fov/2)` high,
+    /// `rows / (2·tan(fov/2))` pixels away. Degenerate input — `target == eye`, `up` zero or
+    /// parallel to the view, a field of view outside (0°, 180°), no pixels — is an error.
+    ///
+    /// The field of view must also suit the number of rows (see [`Camera`]'s limits): at
+    /// least about `2·atan(rows / 32 768)`: 0.84° at 320 × 240, 3.8° at 1920 × 1080, 14.7° at
+    /// 4096 × 4096
+    /// ([`Error::FieldOfViewTooNarrow`], which names the smallest allowed in thousandths of
+    /// a degree), and not so wide that the view distance drops below about `R²/16 384`
+    /// pixels for a screen `R` pixels from centre to corner ([`Error::FieldOfViewTooWide`]).
+    /// Within them every ray is within half a pixel of the exact one; `docs/ACCURACY_FOV.md`
+    /// has the measured agreement with an f64 renderer across fields of view.
     ///
     /// The tangent is libm's `tanf`, correctly rounded to within an ulp. (micromath's `tan`
     /// is 0.07 % off at 60° and 0.19 % at 45°; measured against the f64 reference, that
@@ -126,6 +274,9 @@ impl Camera {
     /// assert!(cam.is_ok());
     /// let bad = Camera::look_at([0.0; 3], [0.0, 5.0, 0.0], [0.0, 1.0, 0.0], 60.0, 160, 128);
     /// assert!(matches!(bad, Err(Error::DegenerateCamera { .. })));
+    /// // A telephoto view of half a degree needs fewer rows than 240.
+    /// let narrow = Camera::look_at([0.0; 3], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0], 0.5, 320, 240);
+    /// assert_eq!(narrow, Err(Error::FieldOfViewTooNarrow { min_millidegrees: 840 }));
     /// ```
     pub fn look_at(
         eye: [f32; 3],
@@ -169,20 +320,15 @@ impl Camera {
         let half_angle = fov_y_degrees.to_radians() / 2.0;
         let screen_h = 2.0 * libm::tanf(half_angle);
         let pitch = screen_h / rows as f32;
-        let distance_px = positive(
-            1.0 / pitch,
-            MAX_VIEW_DISTANCE_PX,
-            "screen distance in pixels",
-        )?;
-        Ok(Camera {
+        Camera::checked(
             eye,
-            forward: forward.scale(distance_px),
-            right,
-            down: -true_up,
-            pitch: Fx::from_num(pitch),
+            forward,
+            view_distance(1.0 / pitch)?,
+            (right, -true_up),
+            Fx::ONE,
             cols,
             rows,
-        })
+        )
     }
 
     /// A look-at camera circling `target` at `distance`: `yaw_degrees` turns it about the
@@ -251,64 +397,131 @@ impl Camera {
         self.eye
     }
 
+    /// Refuses a display row outside the screen: the one check of every function that takes
+    /// a row of the picture ([`render_row`](crate::render_row), [`shoot_row`](crate::shoot_row),
+    /// [`Camera::row_rays`], …).
+    pub(crate) fn check_row(&self, row: u16) -> Result<(), Error> {
+        if row < self.rows {
+            Ok(())
+        } else {
+            Err(Error::RowOutOfRange {
+                row,
+                rows: self.rows,
+            })
+        }
+    }
+
     /// From the eye towards the centre of pixel (`row`, `col`), in pixel units, unnormalised.
     fn towards(&self, row: u16, col: u16) -> Vec3 {
         self.towards_sample(row, col, 0, 0, 1)
     }
 
-    /// From the eye towards sample (`sx`, `sy`) of an `n × n` grid of sub-pixel centres in
-    /// pixel (`row`, `col`), in pixel units, unnormalised. `n = 1` is the pixel centre.
-    fn towards_sample(&self, row: u16, col: u16, sx: u8, sy: u8, n: u8) -> Vec3 {
+    /// `2n` times the direction from the eye towards sample (`sx`, `sy`) of an `n × n` grid of
+    /// sub-pixel centres in pixel (`row`, `col`), as raw Q16.16 values (exact), and `2n`.
+    fn towards_wide(&self, row: u16, col: u16, sx: u8, sy: u8, n: u8) -> ([i64; 3], i64) {
         // Offsets from the screen centre in units of 1/(2n) pixel:
         // 2n·(col + (2·sx + 1)/(2n)) − n·cols.
         let n = n.max(1) as i64;
         let denom = 2 * n;
         let kx = denom * col as i64 + 2 * sx as i64 + 1 - n * self.cols as i64;
         let ky = denom * row as i64 + 2 * sy as i64 + 1 - n * self.rows as i64;
+        // |kx|, |ky| < 2²¹ for any u16 row or column and n ≤ 16, the basis components are
+        // below 2¹⁵ (raw 2³¹, and `down` within 4 pixels), so each sum is below 2⁵³.
         let c = |f: Fx, r: Fx, d: Fx| {
-            let wide =
-                f.to_bits() as i64 * denom + r.to_bits() as i64 * kx + d.to_bits() as i64 * ky;
-            // Divide by 2n, rounding half up. The limits (view distance ≤ 8192 pixels, ≤ 4096
-            // pixels a side, pixel aspect within 1/4..4) keep each component below 18 432
-            // pixels, and n ≤ 16 keeps `wide` below 2⁵⁰.
-            Fx::from_bits((wide + n).div_euclid(denom) as i32)
+            f.to_bits() as i64 * denom + r.to_bits() as i64 * kx + d.to_bits() as i64 * ky
         };
-        Vec3::new(
-            c(self.forward.x, self.right.x, self.down.x),
-            c(self.forward.y, self.right.y, self.down.y),
-            c(self.forward.z, self.right.z, self.down.z),
+        (
+            [
+                c(self.forward.x, self.right.x, self.down.x),
+                c(self.forward.y, self.right.y, self.down.y),
+                c(self.forward.z, self.right.z, self.down.z),
+            ],
+            denom,
         )
     }
 
+    /// From the eye towards sample (`sx`, `sy`) of an `n × n` grid of sub-pixel centres in
+    /// pixel (`row`, `col`), in pixel units, unnormalised. `n = 1` is the pixel centre.
+    ///
+    /// On the screen it is the exact direction rounded (half up) to Q16.16: the ray budget
+    /// keeps it within 16 384 pixels. Off the screen it may be longer than Q16.16 holds, and
+    /// is then scaled down by a power of two until it is at most 16 384 pixels long per
+    /// component, and rounded: the same direction, to about 2⁻³⁰.
+    fn towards_sample(&self, row: u16, col: u16, sx: u8, sy: u8, n: u8) -> Vec3 {
+        let (wide, denom) = self.towards_wide(row, col, sx, sy, n);
+        let shift = if row < self.rows && col < self.cols {
+            0
+        } else {
+            Camera::shift_to_fit(&wide, denom)
+        };
+        // Divide by 2n·2^shift, rounding half up; the quotient is below 2³⁰ + 1 in magnitude.
+        let divisor = denom << shift;
+        let c = |w: i64| Fx::from_bits((w + divisor / 2).div_euclid(divisor) as i32);
+        Vec3::new(c(wide[0]), c(wide[1]), c(wide[2]))
+    }
+
+    /// The smallest `k` for which `2n`-fold components `wide` divided by `2n·2^k` are at most
+    /// 2³⁰ in raw magnitude (16 384 pixels); at most 23, as they are below 2⁵³.
+    #[cold]
+    fn shift_to_fit(wide: &[i64; 3], denom: i64) -> u32 {
+        let largest = wide.iter().map(|w| w.unsigned_abs()).max().unwrap_or(0);
+        let limit = (denom as u64) << 30;
+        let mut shift = 0;
+        while largest >> shift > limit {
+            shift += 1;
+        }
+        shift
+    }
+
     /// The centre of pixel (`row`, `col`) on the view screen, in world units (display
-    /// indexing: row 0 at the top).
+    /// indexing: row 0 at the top), rounded once to Q16.16.
+    ///
+    /// It lies on the pixel's ray ([`Camera::ray`]): the camera's own direction towards the
+    /// pixel, in pixel units, scaled by the screen's distance over the view distance. Both
+    /// are as rounded to Q16.16, so the point carries the view distance's rounding, a
+    /// relative 2⁻¹⁷/F for a view distance of F pixels. Rows and columns outside the screen
+    /// continue its plane; a coordinate beyond the Q16.16 range saturates (at −32 768 or just
+    /// below 32 768), the others are unaffected.
     #[must_use]
     pub fn pixel_centre(&self, row: u16, col: u16) -> Vec3 {
-        self.eye + self.towards(row, col).scale(self.pitch)
+        let (wide, denom) = self.towards_wide(row, col, 0, 0, 1);
+        // World = pixels · screen / view. Below 2⁵³ · 2³¹: the product fits i128, and the
+        // divisor is positive (the view distance is at least one Q16.16 step).
+        let divisor = denom as i128 * self.view.to_bits() as i128;
+        let c = |w: i64| {
+            let point =
+                (w as i128 * self.screen.to_bits() as i128 + divisor / 2).div_euclid(divisor);
+            Fx::from_bits(point.clamp(i32::MIN as i128, i32::MAX as i128) as i32)
+        };
+        self.eye + Vec3::new(c(wide[0]), c(wide[1]), c(wide[2]))
     }
 
     /// The ray from the viewpoint through the centre of pixel (`row`, `col`):
     /// `u_r = p / ‖p‖`.
     ///
-    /// Rows and columns outside the screen are allowed and continue the screen plane.
+    /// Every `u16` row and column is allowed: those outside the screen continue its plane
+    /// (their directions are exact to about 2⁻³⁰ before normalising, like the screen's own).
     #[must_use]
     pub fn ray(&self, row: u16, col: u16) -> Ray {
-        // The screen is at least half a pixel in front of the eye, so p is never zero.
+        // The ray budget keeps the screen at least a Q16.16 step in front of the eye, and
+        // pixel centres off the screen are farther from the eye, so p is never zero.
         let dir = self.towards(row, col).normalize_or_zero();
         Ray::new_unchecked(self.eye, dir)
     }
 
     /// The rays of display row `row`, left to right: [`Camera::ray`] for each column, found
-    /// for less (see [`RowRays`]).
-    #[must_use]
-    pub fn row_rays(&self, row: u16) -> RowRays<'_> {
-        RowRays::new(self, row)
+    /// for less (see [`RowRays`]). A row outside the screen is [`Error::RowOutOfRange`]
+    /// (its rays are [`Camera::ray`]'s).
+    pub fn row_rays(&self, row: u16) -> Result<RowRays<'_>, Error> {
+        self.check_row(row)?;
+        Ok(RowRays::new(self, row))
     }
 
     /// From the eye towards the centre of pixel (`row`, 0), unnormalised: with
     /// [`Camera::column_step`] added `col` times it is exactly the direction towards pixel
     /// (`row`, `col`), since each column adds `2·right` to a numerator that is halved with
-    /// rounding. A row's rays then cost three additions each, before normalising.
+    /// rounding. A row's rays then cost three additions each, before normalising. For a row
+    /// of the screen only ([`Camera::check_row`]).
     pub(crate) fn row_start(&self, row: u16) -> Vec3 {
         self.towards(row, 0)
     }
@@ -327,6 +540,7 @@ impl Camera {
 
     /// The unit normal of the plane through the eye that holds every ray of display row
     /// `row` (the rays of a row differ only along `right`), or `None` if it is degenerate.
+    /// Any `u16` row: off the screen, its direction towards column 0 is scaled to fit.
     pub(crate) fn row_plane_normal(&self, row: u16) -> Option<Vec3> {
         self.right.cross(self.towards(row, 0)).try_normalize()
     }
@@ -352,7 +566,10 @@ impl Camera {
         let high = ratio(x + radius, if x + radius >= Fx::ZERO { near } else { far });
         let low = ratio(x - radius, if x - radius >= Fx::ZERO { far } else { near });
         let distance = self.forward.length().to_bits() as i64;
-        // f · ratio in whole pixels: Q16.16 × Q16.16 / 2³².
+        // f · ratio in whole pixels: Q16.16 × Q16.16 / 2³². The ray budget keeps f at most
+        // 16 384 pixels (raw 2³⁰), and |ratio| < 2³²·² (a numerator below 4572, the eye and
+        // the centre being within ±1024, over a denominator of at least 1/16): the product
+        // is below 2⁶³.
         let column = |r: i64| {
             let offset = (distance * r) >> 32;
             (offset + self.cols as i64 / 2).clamp(-8, MAX_PIXELS as i64 + 8) as i16
@@ -363,7 +580,7 @@ impl Camera {
     /// The ray through sample (`sx`, `sy`) of an `n × n` grid of sub-pixel centres in pixel
     /// (`row`, `col`), for supersampling: sample `(s, t)` sits at
     /// `(col + (2s + 1)/(2n), row + (2t + 1)/(2n))`. `n` is clamped to 1..=16; `n = 1` is
-    /// [`Camera::ray`].
+    /// [`Camera::ray`]. Like it, every `u16` row and column is allowed.
     #[must_use]
     pub fn sample_ray(&self, row: u16, col: u16, sx: u8, sy: u8, n: u8) -> Ray {
         let dir = self
@@ -440,7 +657,7 @@ mod tests {
                 }
                 // Skipping ahead lands on the same rays.
                 for skip in [0u16, 3, 9, 100] {
-                    let mut rays = camera.row_rays(row);
+                    let mut rays = camera.row_rays(row).unwrap();
                     rays.nth(4);
                     let col = 5 + skip; // past the five rays already taken
                     let expected = (col < camera.cols()).then(|| camera.ray(row, col));
@@ -459,6 +676,43 @@ mod tests {
             let (da, db) = (a.ray(row, col).dir, b.ray(row, col).dir);
             for (p, q) in [(da.x, db.x), (da.y, db.y), (da.z, db.z)] {
                 assert!((p - q).abs() <= Fx::from_bits(4), "{da:?} vs {db:?}");
+            }
+        }
+    }
+
+    #[test]
+    fn directions_of_the_screen_fit_without_scaling() {
+        // The ray budget's promise that `towards_sample` relies on for the rows and columns of
+        // the screen: every sample's direction is at most 16 384 pixels a component, so it is
+        // rounded as it is, never scaled. Tried at the budget's edges.
+        let (o, ahead, up) = ([0.0; 3], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]);
+        let cameras = [
+            Camera::look_at(o, ahead, up, 0.841, 320, 240).unwrap(),
+            Camera::look_at(o, ahead, up, 14.722, 4096, 4096).unwrap(),
+            Camera::look_at(o, ahead, up, 151.028, 4096, 4096).unwrap(),
+            Camera::look_at(
+                [1.0, 2.0, 3.0],
+                [-4.0, 0.5, -9.0],
+                [0.1, 1.0, 0.2],
+                15.0,
+                4096,
+                4096,
+            )
+            .unwrap(),
+            Camera::pinhole(1.0, 8.0, 4.0, 2048, 1024).unwrap(),
+            Camera::pinhole(8.0, 1.0, 16.0, 1024, 2048).unwrap(),
+        ];
+        for camera in cameras {
+            let (rows, cols) = (camera.rows(), camera.cols());
+            for (row, col) in [(0, 0), (0, cols - 1), (rows - 1, 0), (rows - 1, cols - 1)] {
+                for (s, t, n) in [(0, 0, 1), (0, 0, 16), (15, 15, 16), (0, 15, 16)] {
+                    let (wide, denom) = camera.towards_wide(row, col, s, t, n);
+                    assert_eq!(
+                        Camera::shift_to_fit(&wide, denom),
+                        0,
+                        "{camera:?} ({row}, {col})"
+                    );
+                }
             }
         }
     }

@@ -38,7 +38,28 @@ pub enum Error {
         /// What is wrong with them.
         why: &'static str,
     },
-    /// A camera and a framebuffer (or display area) of different sizes.
+    /// A field of view too narrow for a camera's number of rows: its rays could not tell its
+    /// pixels apart to within half a pixel.
+    FieldOfViewTooNarrow {
+        /// The narrowest vertical field of view allowed for that screen, in thousandths of a
+        /// degree (rounded up).
+        min_millidegrees: u32,
+    },
+    /// A field of view too wide for a camera's screen: the rays near its edges would be
+    /// rounded by more than half a pixel.
+    FieldOfViewTooWide {
+        /// The widest vertical field of view allowed for that screen, in thousandths of a
+        /// degree (rounded down).
+        max_millidegrees: u32,
+    },
+    /// A display row past the bottom of the camera's picture.
+    RowOutOfRange {
+        /// The row asked for.
+        row: u16,
+        /// The rows the camera has (valid rows are `0..rows`).
+        rows: u16,
+    },
+    /// A camera and a framebuffer (or display area, or row buffer) of different sizes.
     SizeMismatch {
         /// Columns and rows the camera was built for.
         camera: (u16, u16),
@@ -58,6 +79,21 @@ impl fmt::Display for Error {
                 write!(f, "capacity of {capacity} is already used")
             }
             Error::DegenerateCamera { why } => write!(f, "degenerate camera: {why}"),
+            Error::FieldOfViewTooNarrow { min_millidegrees } => write!(
+                f,
+                "field of view too narrow for this screen: at least {}.{:03} degrees",
+                min_millidegrees / 1000,
+                min_millidegrees % 1000
+            ),
+            Error::FieldOfViewTooWide { max_millidegrees } => write!(
+                f,
+                "field of view too wide for this screen: at most {}.{:03} degrees",
+                max_millidegrees / 1000,
+                max_millidegrees % 1000
+            ),
+            Error::RowOutOfRange { row, rows } => {
+                write!(f, "row {row} is outside the picture's {rows} rows")
+            }
             Error::SizeMismatch { camera, target } => write!(
                 f,
                 "camera is {}x{} pixels but the target is {}x{}",

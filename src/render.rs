@@ -60,42 +60,52 @@ pub fn render_row<const N: usize, const L: usize>(
 /// A row of rays lies in one plane through the eye, and each sphere covers a span of columns,
 /// so the row is first culled: only the spheres whose span holds a pixel are tried for it
 /// ([`Scene::seen_from_row`] and [`Camera`]'s conservative screen span of a sphere). The hits
-/// are exactly those of [`Scene::shoot`].
+/// are exactly those of [`Scene::shoot`]. A row outside the screen is
+/// [`Error::RowOutOfRange`], and nothing is shot.
 ///
 /// ```
-/// use fixray::{demo, shoot_row};
+/// use fixray::{demo, shoot_row, Error};
 /// let (scene, camera) = (demo::scene(), demo::camera(40, 32).unwrap());
 /// let mut hits = 0;
 /// shoot_row(&scene, &camera, 31, |col, ray, hit| {
 ///     assert_eq!(hit, scene.shoot(ray), "column {col}");
 ///     hits += hit.is_some() as u32;
-/// });
+/// })?;
 /// assert_eq!(hits, 40); // the bottom row sees the ground everywhere
+/// assert_eq!(
+///     shoot_row(&scene, &camera, 32, |_, _, _| {}),
+///     Err(Error::RowOutOfRange { row: 32, rows: 32 })
+/// );
+/// # Ok::<(), Error>(())
 /// ```
 pub fn shoot_row<const N: usize, const L: usize>(
     scene: &Scene<N, L>,
     camera: &Camera,
     row: u16,
     mut each: impl FnMut(u16, &Ray, Option<Hit>),
-) {
+) -> Result<(), Error> {
+    camera.check_row(row)?;
     cast_row(scene, camera, row, false, |col, _, cast| {
         if let Some((ray, hit)) = cast {
             each(col, ray, hit);
         }
     });
+    Ok(())
 }
 
 /// [`shoot_row`] for a renderer whose background needs no ray (a plain colour): the columns
 /// where the row can meet nothing come as whole runs, `empty(first..end)`, without rays made
 /// for them; every other column as `each(col, ray, hit)`, in column order. This is what
-/// [`render_row`] does over a plain sky, for a shading of one's own.
+/// [`render_row`] does over a plain sky, for a shading of one's own. A row outside the
+/// screen is [`Error::RowOutOfRange`], and nothing is handed over.
 ///
 /// ```
 /// use fixray::{demo, shoot_row_skipping};
 /// let (scene, camera) = (demo::scene(), demo::camera(40, 32).unwrap());
 /// let (mut skipped, mut shot) = (0, 0);
-/// shoot_row_skipping(&scene, &camera, 0, |run| skipped += run.len(), |_, _, _| shot += 1);
+/// shoot_row_skipping(&scene, &camera, 0, |run| skipped += run.len(), |_, _, _| shot += 1)?;
 /// assert_eq!((skipped, shot), (40, 0)); // the top row sees only sky
+/// # Ok::<(), fixray::Error>(())
 /// ```
 pub fn shoot_row_skipping<const N: usize, const L: usize>(
     scene: &Scene<N, L>,
@@ -103,11 +113,13 @@ pub fn shoot_row_skipping<const N: usize, const L: usize>(
     row: u16,
     mut empty: impl FnMut(core::ops::Range<u16>),
     mut each: impl FnMut(u16, &Ray, Option<Hit>),
-) {
+) -> Result<(), Error> {
+    camera.check_row(row)?;
     cast_row(scene, camera, row, true, |first, end, cast| match cast {
         Some((ray, hit)) => each(first, ray, hit),
         None => empty(first..end),
     });
+    Ok(())
 }
 
 /// The engine of [`shoot_row`] and [`render_row`]: the row's runs ([`Runs`]), and in each the
@@ -147,7 +159,8 @@ fn cast_row<const N: usize, const L: usize>(
 /// [`render_row`] with `n × n` supersampling: each pixel is the mean of `n²` rays through
 /// a grid of sub-pixel centres ([`Camera::sample_ray`]), each channel rounded half up.
 /// `n` is clamped to 1..=16; `n = 1` equals [`render_row`]. It costs `n²` times as much, so
-/// it is meant for the desktop and for still frames.
+/// it is meant for the desktop and for still frames. The row and `out` are checked as by
+/// [`render_row`].
 ///
 /// ```
 /// use fixray::{demo, render_row, render_row_supersampled, Rgb};
@@ -183,15 +196,15 @@ pub fn render_row_supersampled<const N: usize, const L: usize>(
     Ok(())
 }
 
-/// Refuses a row outside the screen or a buffer of the wrong width.
+/// Refuses a row outside the screen ([`Error::RowOutOfRange`]), then a row buffer of the
+/// wrong width: a [`Error::SizeMismatch`] whose target has the buffer's length for columns
+/// and the camera's rows, so that only the columns differ.
 fn check_row(camera: &Camera, row: u16, out: &[Rgb]) -> Result<(), Error> {
-    if out.len() != camera.cols() as usize || row >= camera.rows() {
+    camera.check_row(row)?;
+    if out.len() != camera.cols() as usize {
         return Err(Error::SizeMismatch {
             camera: (camera.cols(), camera.rows()),
-            target: (
-                out.len().min(u16::MAX as usize) as u16,
-                row.saturating_add(1),
-            ),
+            target: (out.len().min(u16::MAX as usize) as u16, camera.rows()),
         });
     }
     Ok(())

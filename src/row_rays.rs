@@ -15,11 +15,13 @@ use crate::vec3::Vec3;
 /// ```
 /// use fixray::demo;
 /// let camera = demo::camera(160, 128).unwrap();
-/// for (col, ray) in (0..).zip(camera.row_rays(40)) {
+/// for (col, ray) in (0..).zip(camera.row_rays(40)?) {
 ///     assert_eq!(ray, camera.ray(40, col));
 /// }
-/// assert_eq!(camera.row_rays(40).count(), 160);
-/// assert_eq!(camera.row_rays(40).nth(100), Some(camera.ray(40, 100)));
+/// assert_eq!(camera.row_rays(40)?.count(), 160);
+/// assert_eq!(camera.row_rays(40)?.nth(100), Some(camera.ray(40, 100)));
+/// assert!(camera.row_rays(128).is_err()); // past the bottom row
+/// # Ok::<(), fixray::Error>(())
 /// ```
 #[derive(Debug, Clone)]
 pub struct RowRays<'a> {
@@ -30,6 +32,8 @@ pub struct RowRays<'a> {
 }
 
 impl<'a> RowRays<'a> {
+    /// The rays of display row `row`, which must be a row of the screen (the ray budget keeps
+    /// its directions, and the squares carried along it, in range).
     pub(crate) fn new(camera: &'a Camera, row: u16) -> Self {
         let towards = camera.row_start(row);
         RowRays {

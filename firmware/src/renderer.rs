@@ -193,7 +193,7 @@ impl Renderer for FixedRays {
                     count += 1;
                 },
                 |_, _, _| {},
-            );
+            )?;
             if count > SKIPS {
                 return Err(too_many);
             }
@@ -205,7 +205,7 @@ impl Renderer for FixedRays {
     }
 
     fn render_row(&self, row: u16, out: &mut [Rgb]) -> Result<(), Error> {
-        let mut rays = self.camera.row_rays(row);
+        let mut rays = self.camera.row_rays(row)?;
         let mut col = 0u16;
         let skips = self.skips.get(row as usize).into_iter().flatten();
         for &(first, end) in skips.chain([&(self.camera.cols(), self.camera.cols())]) {
@@ -272,7 +272,7 @@ impl Renderer for FixedShoot {
                     *pixel = Rgb::BLACK;
                 }
             },
-        );
+        )?;
         for &(first, end) in empty.iter().take(count) {
             if let Some(run) = out.get_mut(first as usize..end as usize) {
                 run.fill(Rgb::WHITE);
