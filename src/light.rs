@@ -30,9 +30,18 @@ impl Light {
         })
     }
 
-    /// A light whose values the caller promises are valid. For `const` scenes.
+    /// A light whose values the caller promises are valid (those [`Light::new`] checks). For
+    /// `const` scenes. Debug builds check the promise.
     #[must_use]
     pub const fn new_unchecked(position: Vec3, intensity: Fx) -> Self {
+        debug_assert!(
+            position.within_raw(crate::LIMIT.to_bits()),
+            "Light::new_unchecked: position outside ±1024"
+        );
+        debug_assert!(
+            intensity.to_bits() >= 0 && intensity.to_bits() <= 4 << 16,
+            "Light::new_unchecked: intensity outside 0 to 4"
+        );
         Light {
             position,
             intensity,

@@ -35,10 +35,16 @@ impl Ray {
         Ok(Ray { origin, dir })
     }
 
-    /// A ray whose direction the caller promises is already a unit vector.
+    /// A ray whose direction the caller promises is already a unit vector, as
+    /// [`Vec3::try_normalize`] gives it: within a few units of 2⁻¹⁶ of length 1. Debug
+    /// builds check that promise.
     #[inline]
     #[must_use]
     pub const fn new_unchecked(origin: Vec3, dir: Vec3) -> Self {
+        debug_assert!(
+            is_unit(dir),
+            "Ray::new_unchecked: the direction is not a unit vector"
+        );
         Ray { origin, dir }
     }
 
@@ -55,4 +61,11 @@ impl Ray {
     pub(crate) fn at_hit(&self, t: Fx) -> Vec3 {
         self.origin + self.dir.scale_unit(t)
     }
+}
+
+/// Whether `dir` has length 1 within the rounding of [`Vec3::try_normalize`]: each component
+/// within a unit of 2⁻¹⁶ of exact puts the squared length within 2⁻¹⁴ of 1; 2⁻¹² leaves room.
+pub(crate) const fn is_unit(dir: Vec3) -> bool {
+    let one = 1u64 << 32; // 1 in Q32.32
+    dir.length_squared_wide().abs_diff(one) <= one >> 12
 }
