@@ -168,8 +168,8 @@ impl Vec3 {
     #[must_use]
     pub(crate) const fn dot_wide_exact(self, o: Vec3) -> i64 {
         debug_assert!(
-            (self.within_raw(1 << 17) && o.within_raw(i32::MAX))
-                || (o.within_raw(1 << 17) && self.within_raw(i32::MAX))
+            self.within_raw(1 << 17)
+                || o.within_raw(1 << 17)
                 || (self.within_raw((1 << 30) - 1) && o.within_raw((1 << 30) - 1)),
             "dot_wide_exact: neither vector a unit one, nor both inside the overflow budget"
         );
@@ -178,8 +178,7 @@ impl Vec3 {
             + fx::wide_mul(self.z.to_bits(), o.z.to_bits())
     }
 
-    /// Whether every raw component lies within `±bound` (`−i32::MAX` to `i32::MAX` for
-    /// `bound = i32::MAX`, which leaves out only `i32::MIN`, whose square is 2⁶²).
+    /// Whether every raw component lies within `±bound`.
     pub(crate) const fn within_raw(self, bound: i32) -> bool {
         const fn within(c: Fx, bound: i32) -> bool {
             c.to_bits() >= -bound && c.to_bits() <= bound
