@@ -6,6 +6,10 @@ use crate::vec3::Vec3;
 
 /// A point light at `position` with an `intensity` between 0 and 4 (1 lights a white surface
 /// facing it fully; several lights add up).
+///
+/// [`Light::new`] checks both. The fields are public, so a light built by hand may hold any
+/// value: shading saturates instead of wrapping, and shadows from a light outside ±1024 are
+/// tested against every object instead of being culled.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Light {
     /// Where the light is.

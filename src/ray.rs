@@ -7,6 +7,11 @@ use crate::vec3::Vec3;
 /// A ray: an origination point `p_r` and a unit direction `u_r`.
 ///
 /// Every point on the ray is `x(t) = p_r + t·u_r` for a distance `t ≥ 0` (Eq. 4.1).
+///
+/// The fields are public, so a ray built by hand may hold any origin and a direction that is
+/// not a unit vector. Every function that takes a ray still returns without overflow for it
+/// (products and sums saturate), but its answers are those for a unit direction only when it
+/// has one: build rays with [`Ray::new`] for the documented results.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Ray {
     /// The origination point `p_r`.
@@ -48,7 +53,8 @@ impl Ray {
         Ray { origin, dir }
     }
 
-    /// The point at distance `t` along the ray: `p_r + t·u_r`.
+    /// The point at distance `t` along the ray: `p_r + t·u_r`, each component saturating at
+    /// the ends of Q16.16.
     #[inline]
     #[must_use]
     pub fn at(&self, t: Fx) -> Vec3 {
