@@ -31,12 +31,19 @@ impl Background {
     }
 
     /// The colour seen along the unit direction `dir`, in linear units (1 = 255).
+    ///
+    /// A ray built by hand may carry a direction that is not a unit vector: its `y` is taken
+    /// as at most 1 + 2⁻¹⁶ in magnitude, the most a unit direction's component can be after
+    /// rounding, so every unit direction blends as before, a longer one blends as the unit
+    /// direction nearest it straight up or down, and the blend cannot overflow.
     pub(crate) fn along(&self, dir: Vec3) -> Linear {
         if let Some(c) = self.plain_colour() {
             // Nothing to blend.
             return [c.r, c.g, c.b].map(channel_to_linear);
         }
-        let s = (dir.y + Fx::ONE) >> 1; // 0 straight down, 1 straight up
+        const MOST: Fx = Fx::from_bits((1 << 16) + 1);
+        // 0 straight down, 1 straight up: within −2⁻¹⁶..=1, whatever `dir` is.
+        let s = (dir.y.clamp(-MOST, MOST) + Fx::ONE) >> 1;
         let mix = |b: u8, t: u8| {
             let (b, t) = (channel_to_linear(b), channel_to_linear(t));
             b + crate::fx::mul(t - b, s)

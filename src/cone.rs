@@ -42,8 +42,20 @@ impl ShadowCone {
         let Shape::Sphere(sphere) = shape else {
             return ShadowCone::ALWAYS;
         };
+        // Lights (public fields) and spheres (`new_unchecked`) can hold values outside their
+        // documented ranges; the cone is only a shortcut, so for those the shadow test is
+        // always made, and none of the arithmetic below meets them.
+        let limit = crate::LIMIT.to_bits();
+        let radius = sphere.radius();
+        if !light.within_raw(limit)
+            || !sphere.centre().within_raw(limit)
+            || radius <= Fx::ZERO
+            || radius > crate::LIMIT
+        {
+            return ShadowCone::ALWAYS;
+        }
         let to_centre = sphere.centre() - light;
-        let (distance, radius) = (to_centre.length(), sphere.radius());
+        let distance = to_centre.length();
         let Some(axis) = to_centre.try_normalize() else {
             return ShadowCone::ALWAYS;
         };

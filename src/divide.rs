@@ -13,7 +13,7 @@ const SEEDS: [u16; 128] = {
     seeds
 };
 
-/// `num · 2¹⁶ / den` for `den > 0`, within one unit plus 2⁻²⁷ of the exact quotient
+/// `num · 2¹⁶ / den` for `den > 0` and a quotient below 2³² (`num < den · 2¹⁶`), within one unit plus 2⁻²⁷ of the exact quotient
 /// (a distance of 8192 is off by at most 5 units of 2⁻¹⁶, a distance of 10 by at most one).
 ///
 /// `den` is scaled into `δ ∈ [½, 1)` in Q0.32, a table gives `1/δ` to about 0.4 %, two
@@ -21,6 +21,12 @@ const SEEDS: [u16; 128] = {
 /// top 32 bits are multiplied by it. Every product is 32 × 32 → 64 bits. A 64-bit division is a long library call on every chip fixray targets.
 #[must_use]
 pub(crate) fn div_q16(num: u64, den: u64) -> u32 {
+    // A quotient of 2³² or more would not fit, and its shift below would go negative.
+    debug_assert!(den > 0, "div_q16: zero divisor");
+    debug_assert!(
+        (num as u128) < (den as u128) << 16,
+        "div_q16: the quotient does not fit 32 bits"
+    );
     if num == 0 {
         return 0;
     }

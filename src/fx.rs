@@ -95,8 +95,18 @@ const fn split_mul_u32(a: u32, b: u32) -> u64 {
 #[must_use]
 pub(crate) const fn mul_shift_round(a: i32, b: i32, shift: u32) -> i64 {
     let wide = wide_mul(a, b);
+    // The one product whose high word is 2³⁰ is i32::MIN², and a shift of 63 rounds with 2³⁰:
+    // that sum alone would not fit. Callers multiply by a positive reciprocal (below 2³¹).
+    debug_assert!(
+        shift >= 1 && shift <= 63,
+        "mul_shift_round: shift outside 1..=63"
+    );
+    debug_assert!(
+        !(shift == 63 && wide == 1 << 62),
+        "mul_shift_round: i32::MIN² shifted by 63"
+    );
     if shift >= 33 {
-        // |high| ≤ 2³⁰, and so is the rounding term: the sum fits.
+        // |high| ≤ 2³⁰, and so is the rounding term; both reach it only in the case above.
         let high = (wide >> 32) as i32;
         ((high + (1 << (shift - 33))) >> (shift - 32)) as i64
     } else {
@@ -109,6 +119,11 @@ pub(crate) const fn mul_shift_round(a: i32, b: i32, shift: u32) -> i64 {
 #[inline]
 #[must_use]
 const fn shr_to_u32(x: u64, k: u32) -> u32 {
+    debug_assert!(k <= 32, "shr_to_u32: shift above 32");
+    debug_assert!(
+        x >> k <= u32::MAX as u64,
+        "shr_to_u32: the result does not fit 32 bits"
+    );
     let (high, low) = ((x >> 32) as u32, x as u32);
     if k == 0 {
         low
@@ -125,6 +140,8 @@ const fn shr_to_u32(x: u64, k: u32) -> u32 {
 #[inline]
 #[must_use]
 pub(crate) const fn top_word(x: u64, p: u32) -> u32 {
+    debug_assert!(p >= 1 && p <= 64, "top_word: bit length outside 1..=64");
+    debug_assert!(p == 64 || x >> p == 0, "top_word: x has more than p bits");
     if p >= 32 {
         shr_to_u32(x, p - 32)
     } else {
@@ -176,16 +193,32 @@ const fn bit_length_u32(mut x: u32) -> u32 {
 #[inline]
 #[must_use]
 pub(crate) const fn narrow(wide: i64) -> Fx {
-    let rounded = (wide + (1 << (FRAC - 1))) >> FRAC;
+    match narrow_fitting(wide) {
+        Some(x) => x,
+        // The sign of `wide`, not of the rounded value: the rounding term wraps the largest
+        // values (from i64::MAX − 2¹⁵ + 1 up) round to negative ones.
+        None if wide < 0 => Fx::MIN,
+        None => Fx::MAX,
+    }
+}
+
+/// [`narrow`] where the rounded value fits Q16.16, `None` where it does not.
+///
+/// The rounding term is added with wrapping: the only sums that wrap start within 2¹⁵ of
+/// `i64::MAX` and land within 2¹⁵ of `i64::MIN`, whose rounded value (about −2⁴⁷) does not
+/// fit either, so they come back `None` like every other value out of range. Wrapping costs
+/// nothing here, where a saturating add would cost a check on every product.
+#[inline]
+#[must_use]
+pub(crate) const fn narrow_fitting(wide: i64) -> Option<Fx> {
+    let rounded = wide.wrapping_add(1 << (FRAC - 1)) >> FRAC;
     let low = rounded as i32;
     // It fits when its high word is the sign extension of the low one: one comparison of
     // 32-bit words, where two 64-bit comparisons would cost several instructions each.
     if (rounded >> 32) as i32 == low >> 31 {
-        Fx::from_bits(low)
-    } else if rounded < 0 {
-        Fx::MIN
+        Some(Fx::from_bits(low))
     } else {
-        Fx::MAX
+        None
     }
 }
 
@@ -196,13 +229,19 @@ pub const fn mul(a: Fx, b: Fx) -> Fx {
     narrow(wide_mul(a.to_bits(), b.to_bits()))
 }
 
-/// `a · b` rounded to nearest, for a product known to fit: `|b| ≤ 1` (raw `|b| ≤ 2¹⁶`), so
+/// `a · b` rounded to nearest, for a product known to fit: `0 ≤ b ≤ 1` (raw `b ≤ 2¹⁶`), so
 /// `|a · b| ≤ |a|`. Shading's colour channels and highlight powers are such factors by
 /// construction. It skips [`mul`]'s saturation check, which costs about as much as the
 /// product itself.
 #[inline]
 #[must_use]
 pub(crate) const fn mul_fits(a: Fx, b: Fx) -> Fx {
+    // With 0 ≤ b ≤ 1 the rounded product lies between 0 and a. A negative b could not hold
+    // that: i32::MIN · −1 does not fit.
+    debug_assert!(
+        b.to_bits() >= 0 && b.to_bits() <= 1 << FRAC,
+        "mul_fits: factor outside 0..=1"
+    );
     Fx::from_bits(((wide_mul(a.to_bits(), b.to_bits()) + (1 << (FRAC - 1))) >> FRAC) as i32)
 }
 
@@ -342,7 +381,7 @@ mod tests {
             let seed = rng.next();
             let a = Fx::from_bits((seed as i32) >> 2); // |a| < 2¹³
             let u = Fx::from_bits(((seed >> 32) as i32) >> 15); // |u| ≤ 1
-            assert_eq!(mul_fits(a, u), mul(a, u));
+            assert_eq!(mul_fits(a, u.abs()), mul(a, u.abs()));
             assert_eq!(mul_unit(a, u), mul(a, u));
         }
         // Far outside the bounds: clamped, not wrapped.
@@ -357,6 +396,39 @@ mod tests {
     fn mul_saturates_instead_of_wrapping() {
         assert_eq!(mul(Fx::from_num(200), Fx::from_num(200)), Fx::MAX);
         assert_eq!(mul(Fx::from_num(-200), Fx::from_num(200)), Fx::MIN);
+        assert_eq!(mul(Fx::MAX, Fx::MAX), Fx::MAX);
+        assert_eq!(mul(Fx::MIN, Fx::MIN), Fx::MAX);
+        assert_eq!(mul(Fx::MIN, Fx::MAX), Fx::MIN);
+        assert_eq!(mul(Fx::MIN, -Fx::ONE), Fx::MAX);
+    }
+
+    #[test]
+    fn narrow_saturates_at_both_ends_of_i64() {
+        // The rounding term would carry these past i64::MAX.
+        for wide in [i64::MAX, i64::MAX - (1 << 15) + 1, i64::MAX - (1 << 15)] {
+            assert_eq!(narrow(wide), Fx::MAX, "{wide}");
+        }
+        for wide in [i64::MIN, i64::MIN + 1, -(1 << 48)] {
+            assert_eq!(narrow(wide), Fx::MIN, "{wide}");
+        }
+        // The last values that round into range, and the first that do not.
+        let top = (i32::MAX as i64) << 16;
+        assert_eq!(narrow(top + (1 << 15) - 1), Fx::MAX);
+        assert_eq!(narrow(top + (1 << 15)), Fx::MAX);
+        assert_eq!(narrow_fitting(top + (1 << 15)), None);
+        assert_eq!(narrow_fitting(top + (1 << 15) - 1), Some(Fx::MAX));
+        let bottom = (i32::MIN as i64) << 16;
+        assert_eq!(narrow_fitting(bottom - (1 << 15)), Some(Fx::MIN));
+        assert_eq!(narrow_fitting(bottom - (1 << 15) - 1), None);
+        assert_eq!(narrow(bottom - (1 << 15) - 1), Fx::MIN);
+        // Everywhere else, the rounded quotient, exactly.
+        let mut rng = crate::xorshift::XorShift(0x1234_5678_9abc_def1);
+        for i in 0..20_000u32 {
+            let wide = (rng.next() as i64) >> (i % 64);
+            let exact = (wide as i128 + (1 << 15)) >> 16;
+            let want = exact.clamp(i32::MIN as i128, i32::MAX as i128) as i32;
+            assert_eq!(narrow(wide).to_bits(), want, "{wide}");
+        }
     }
 
     #[test]

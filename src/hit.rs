@@ -4,6 +4,11 @@ use crate::fx::Fx;
 use crate::vec3::Vec3;
 
 /// The first point where a ray meets a surface.
+///
+/// The fields are public: a hit built by hand, with a normal that is not a unit vector or an
+/// object index past the scene's last, may be handed to
+/// [`Scene::shade`](crate::Scene::shade), which saturates instead of overflowing (and shades
+/// an index past the last object as a miss).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Hit {
     /// Distance along the ray, `t ≥ 0`.

@@ -6,6 +6,10 @@ use crate::vec3::Vec3;
 
 /// A point light at `position` with an `intensity` between 0 and 4 (1 lights a white surface
 /// facing it fully; several lights add up).
+///
+/// [`Light::new`] checks both. The fields are public, so a light built by hand may hold any
+/// value: shading saturates instead of wrapping, and shadows from a light outside ±1024 are
+/// tested against every object instead of being culled.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Light {
     /// Where the light is.
@@ -30,9 +34,18 @@ impl Light {
         })
     }
 
-    /// A light whose values the caller promises are valid. For `const` scenes.
+    /// A light whose values the caller promises are valid (those [`Light::new`] checks). For
+    /// `const` scenes. Debug builds check the promise.
     #[must_use]
     pub const fn new_unchecked(position: Vec3, intensity: Fx) -> Self {
+        debug_assert!(
+            position.within_raw(crate::LIMIT.to_bits()),
+            "Light::new_unchecked: position outside ±1024"
+        );
+        debug_assert!(
+            intensity.to_bits() >= 0 && intensity.to_bits() <= 4 << 16,
+            "Light::new_unchecked: intensity outside 0 to 4"
+        );
         Light {
             position,
             intensity,

@@ -40,7 +40,11 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         reflect: Fx,
     ) -> Linear {
         let mut weight = fx::mul(Fx::ONE, reflect);
-        let mut ray = Ray::new_unchecked(first.point, mirror(dir, normal));
+        let Some(bounced) = mirror(dir, normal) else {
+            add(&mut sum, weight, self.background().along(dir));
+            return sum;
+        };
+        let mut ray = Ray::new_unchecked(first.point, bounced);
         let mut leaving = first.object;
         let mut bounce = 0;
         loop {
@@ -62,7 +66,11 @@ impl<const N: usize, const L: usize> Scene<N, L> {
                 return sum;
             }
             weight = fx::mul(weight, reflect);
-            ray = Ray::new_unchecked(h.point, mirror(ray.dir, normal));
+            let Some(bounced) = mirror(ray.dir, normal) else {
+                add(&mut sum, weight, self.background().along(ray.dir));
+                return sum;
+            };
+            ray = Ray::new_unchecked(h.point, bounced);
             leaving = h.object;
         }
     }
@@ -136,16 +144,24 @@ fn add(sum: &mut Linear, weight: Fx, c: Linear) {
 
 /// The normal turned to face against the ray, so that a sphere seen from inside and a plane
 /// seen from behind are lit on the side the ray is on.
+///
+/// [`Hit`] and [`Ray`] have public fields, so neither vector need be a unit one here: the
+/// sign comes from [`Vec3::dot_wide`], exact for every pair of vectors, which costs one check
+/// of the sum's top bits more than a plain sum.
 fn facing(normal: Vec3, dir: Vec3) -> Vec3 {
-    if normal.dot_wide_exact(dir) > 0 {
+    if normal.dot_wide(dir) > 0 {
         -normal
     } else {
         normal
     }
 }
 
-/// The mirror direction `d − 2(d·n)n`, renormalised.
-fn mirror(dir: Vec3, normal: Vec3) -> Vec3 {
-    let along = normal.scale(dir.dot(normal) * 2);
-    (dir - along).try_normalize().unwrap_or(dir)
+/// The mirror direction `d − 2(d·n)n`, renormalised; `None` where it has no direction.
+///
+/// For unit `d` and `n` it is never zero (it has the length of `d`). A hand-built [`Hit`] or
+/// [`Ray`] can make it so, or make its terms saturate: every step saturates, and a mirror
+/// direction of zero length sees the background, as an escaping ray does.
+fn mirror(dir: Vec3, normal: Vec3) -> Option<Vec3> {
+    let along = normal.scale(dir.dot(normal).saturating_mul_int(2));
+    (dir - along).try_normalize()
 }

@@ -13,6 +13,10 @@ use crate::fx::Fx;
 ///
 /// and the pixel is `local + reflect · (what the mirror ray sees)`, each channel clamped to
 /// 0..=255 at the end. `colour` counts 0..=255 as 0..=1.
+///
+/// [`Material::new`] checks the ranges below. The fields are public, so a material built by
+/// hand may hold any value: shading then saturates every weighted sum instead of wrapping,
+/// and a weight outside its range gives a colour clamped to 0..=255, not a panic.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Material {
     /// The surface colour under full white light.

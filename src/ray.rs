@@ -7,6 +7,11 @@ use crate::vec3::Vec3;
 /// A ray: an origination point `p_r` and a unit direction `u_r`.
 ///
 /// Every point on the ray is `x(t) = p_r + t·u_r` for a distance `t ≥ 0` (Eq. 4.1).
+///
+/// The fields are public, so a ray built by hand may hold any origin and a direction that is
+/// not a unit vector. Every function that takes a ray still returns without overflow for it
+/// (products and sums saturate), but its answers are those for a unit direction only when it
+/// has one: build rays with [`Ray::new`] for the documented results.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Ray {
     /// The origination point `p_r`.
@@ -35,14 +40,21 @@ impl Ray {
         Ok(Ray { origin, dir })
     }
 
-    /// A ray whose direction the caller promises is already a unit vector.
+    /// A ray whose direction the caller promises is already a unit vector, as
+    /// [`Vec3::try_normalize`] gives it: within a few units of 2⁻¹⁶ of length 1. Debug
+    /// builds check that promise.
     #[inline]
     #[must_use]
     pub const fn new_unchecked(origin: Vec3, dir: Vec3) -> Self {
+        debug_assert!(
+            is_unit(dir),
+            "Ray::new_unchecked: the direction is not a unit vector"
+        );
         Ray { origin, dir }
     }
 
-    /// The point at distance `t` along the ray: `p_r + t·u_r`.
+    /// The point at distance `t` along the ray: `p_r + t·u_r`, each component saturating at
+    /// the ends of Q16.16.
     #[inline]
     #[must_use]
     pub fn at(&self, t: Fx) -> Vec3 {
@@ -55,4 +67,11 @@ impl Ray {
     pub(crate) fn at_hit(&self, t: Fx) -> Vec3 {
         self.origin + self.dir.scale_unit(t)
     }
+}
+
+/// Whether `dir` has length 1 within the rounding of [`Vec3::try_normalize`]: each component
+/// within a unit of 2⁻¹⁶ of exact puts the squared length within 2⁻¹⁴ of 1; 2⁻¹² leaves room.
+pub(crate) const fn is_unit(dir: Vec3) -> bool {
+    let one = 1u64 << 32; // 1 in Q32.32
+    dir.length_squared_wide().abs_diff(one) <= one >> 12
 }

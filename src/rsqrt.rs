@@ -28,6 +28,8 @@ const SEEDS: [u16; 192] = {
 /// relative. `y` lies in `(2³⁰, 2³¹)`. Every product is 32 × 32 → 64 bits.
 #[must_use]
 pub(crate) fn rsqrt(s: u64) -> (u32, u32) {
+    // 0 has no reciprocal root, and no bit for the table to be indexed by.
+    debug_assert!(s >= 1, "rsqrt: zero argument");
     // s < 2^p with p even, and s ≥ 2^(p−2).
     let bits = bit_length(s);
     let p = (bits + 1) & !1;

@@ -121,36 +121,92 @@ impl Vec3 {
     #[inline]
     #[must_use]
     pub const fn dot_wide(self, o: Vec3) -> i64 {
-        fx::wide_mul(self.x.to_bits(), o.x.to_bits())
-            .saturating_add(fx::wide_mul(self.y.to_bits(), o.y.to_bits()))
-            .saturating_add(fx::wide_mul(self.z.to_bits(), o.z.to_bits()))
+        let wrapped = self.dot_wide_wrapping(o);
+        // Three products of at most 2⁶² each sum to at most 3 · 2⁶² in magnitude, so a sum
+        // that wrapped lies at least 2⁶² from zero: one that lies within 2⁶¹ is exact. Any
+        // other goes to the exact 128-bit sum, which only out-of-budget vectors need.
+        if wrapped >> 61 == wrapped >> 63 {
+            wrapped
+        } else {
+            self.dot_wide_saturated(o)
+        }
     }
 
-    /// The dot product as an exact Q32.32 value, for vectors inside the render path's
-    /// budget: components below 2¹⁴ in magnitude (raw values below 2³⁰), as hit points,
-    /// vectors to lights and unit vectors are. Each product is then below 2⁶⁰ and the sum
-    /// below 2⁶², so plain addition cannot overflow and needs none of [`Vec3::dot_wide`]'s
-    /// saturation checks.
+    /// The three products summed at 64 bits with wrapping: the exact dot product whenever it
+    /// fits, and the same instructions as a plain sum.
+    #[inline]
+    const fn dot_wide_wrapping(self, o: Vec3) -> i64 {
+        fx::wide_mul(self.x.to_bits(), o.x.to_bits())
+            .wrapping_add(fx::wide_mul(self.y.to_bits(), o.y.to_bits()))
+            .wrapping_add(fx::wide_mul(self.z.to_bits(), o.z.to_bits()))
+    }
+
+    /// The exact dot product at 128 bits, saturated to `i64`: the rare path of
+    /// [`Vec3::dot_wide`] and [`Vec3::dot`], for vectors far outside the overflow budget.
+    #[cold]
+    #[inline(never)]
+    const fn dot_wide_saturated(self, o: Vec3) -> i64 {
+        const fn p(a: Fx, b: Fx) -> i128 {
+            a.to_bits() as i128 * b.to_bits() as i128
+        }
+        let sum = p(self.x, o.x) + p(self.y, o.y) + p(self.z, o.z);
+        if sum > i64::MAX as i128 {
+            i64::MAX
+        } else if sum < i64::MIN as i128 {
+            i64::MIN
+        } else {
+            sum as i64
+        }
+    }
+
+    /// The dot product as an exact Q32.32 value, without [`Vec3::dot_wide`]'s range check,
+    /// for the render path's vectors: one of them a unit vector (components within ±2, raw
+    /// values within ±2¹⁷), as ray directions and surface normals are, or both inside the
+    /// budget (components below 2¹⁴, raw values below 2³⁰), as hit points and vectors to
+    /// lights are. The sum then lies below 2⁵⁰, or 2⁶², and plain addition cannot overflow.
     #[inline]
     #[must_use]
     pub(crate) const fn dot_wide_exact(self, o: Vec3) -> i64 {
+        debug_assert!(
+            self.within_raw(1 << 17)
+                || o.within_raw(1 << 17)
+                || (self.within_raw((1 << 30) - 1) && o.within_raw((1 << 30) - 1)),
+            "dot_wide_exact: neither vector a unit one, nor both inside the overflow budget"
+        );
         fx::wide_mul(self.x.to_bits(), o.x.to_bits())
             + fx::wide_mul(self.y.to_bits(), o.y.to_bits())
             + fx::wide_mul(self.z.to_bits(), o.z.to_bits())
     }
 
-    /// [`Vec3::dot_wide_exact`] rounded once to Q16.16.
+    /// Whether every raw component lies within `±bound`.
+    pub(crate) const fn within_raw(self, bound: i32) -> bool {
+        const fn within(c: Fx, bound: i32) -> bool {
+            c.to_bits() >= -bound && c.to_bits() <= bound
+        }
+        within(self.x, bound) && within(self.y, bound) && within(self.z, bound)
+    }
+
+    /// [`Vec3::dot`] by the render path's name for it: exact, rounded once, and saturating
+    /// for any vectors, at the cost of a plain sum (see [`Vec3::dot`]).
     #[inline]
     #[must_use]
     pub(crate) const fn dot_exact(self, o: Vec3) -> Fx {
-        fx::narrow(self.dot_wide_exact(o))
+        self.dot(o)
     }
 
     /// The dot product, formed at 64 bits and rounded once to Q16.16 (saturating).
+    ///
+    /// The three products are summed with wrapping, which is exact whenever the rounded
+    /// result fits Q16.16: a sum that wrapped lies at least 2⁶² from zero and cannot round
+    /// into range. Only a result out of range takes the slow path, to find its sign at 128
+    /// bits, so saturation costs nothing on the way through.
     #[inline]
     #[must_use]
     pub const fn dot(self, o: Vec3) -> Fx {
-        fx::narrow(self.dot_wide(o))
+        match fx::narrow_fitting(self.dot_wide_wrapping(o)) {
+            Some(dot) => dot,
+            None => fx::narrow(self.dot_wide_saturated(o)),
+        }
     }
 
     /// The cross product, each component formed at 64 bits and rounded once.
@@ -217,6 +273,10 @@ impl Vec3 {
     /// for callers that have it already, or can keep it up to date for less.
     #[inline]
     pub(crate) fn normalize_with_square(self, square: u64) -> Option<Vec3> {
+        debug_assert!(
+            square == self.length_squared_wide(),
+            "normalize_with_square: square is not the vector's squared length"
+        );
         if square == 0 {
             return None;
         }
@@ -353,6 +413,121 @@ mod tests {
         let n = big.try_normalize().unwrap();
         let third = Fx::from_num(0.57735);
         assert!((n.x - third).abs() < Fx::from_num(0.0001), "{n:?}");
+    }
+
+    /// The extremes of Q16.16, each vector of them, and a few ordinary ones.
+    fn extreme_vectors() -> [Vec3; 192] {
+        let values = [
+            Fx::MIN,
+            Fx::MIN + Fx::from_bits(1),
+            -Fx::ONE,
+            Fx::ZERO,
+            Fx::from_bits(1),
+            Fx::ONE,
+            Fx::MAX - Fx::from_bits(1),
+            Fx::MAX,
+        ];
+        let mut out = [Vec3::ZERO; 192];
+        let mut slots = out.iter_mut();
+        for &x in &values {
+            for &y in &values {
+                for &z in &[Fx::MIN, Fx::ZERO, Fx::MAX] {
+                    *slots.next().unwrap() = Vec3::new(x, y, z);
+                }
+            }
+        }
+        out
+    }
+
+    fn exact_dot(a: Vec3, b: Vec3) -> i128 {
+        let p = |u: Fx, v: Fx| u.to_bits() as i128 * v.to_bits() as i128;
+        p(a.x, b.x) + p(a.y, b.y) + p(a.z, b.z)
+    }
+
+    #[test]
+    fn dot_saturates_at_the_extremes() {
+        let top = Vec3::new(Fx::MAX, Fx::MAX, Fx::MAX);
+        let bottom = Vec3::new(Fx::MIN, Fx::MIN, Fx::MIN);
+        assert_eq!(top.dot(top), Fx::MAX);
+        assert_eq!(bottom.dot(bottom), Fx::MAX);
+        assert_eq!(top.dot(bottom), Fx::MIN);
+        assert_eq!(top.dot_exact(top), Fx::MAX);
+        assert_eq!(bottom.dot_wide(bottom), i64::MAX);
+        assert_eq!(top.dot_wide(bottom), i64::MIN);
+        // MAX² + MIN² + MIN·MAX = 2⁶² + 2⁶² − 2³¹·… fits: exact, not saturated.
+        let mixed = Vec3::new(Fx::MAX, Fx::MIN, Fx::MIN);
+        let other = Vec3::new(Fx::MAX, Fx::MIN, Fx::MAX);
+        assert_eq!(mixed.dot_wide(other) as i128, exact_dot(mixed, other));
+        for &a in &extreme_vectors() {
+            for &b in &extreme_vectors() {
+                let exact = exact_dot(a, b);
+                let wide = exact.clamp(i64::MIN as i128, i64::MAX as i128) as i64;
+                assert_eq!(a.dot_wide(b), wide, "{a:?} · {b:?}");
+                let rounded = (exact + (1 << 15)) >> 16;
+                let narrow = rounded.clamp(i32::MIN as i128, i32::MAX as i128) as i32;
+                assert_eq!(a.dot(b).to_bits(), narrow, "{a:?} · {b:?}");
+                assert_eq!(a.dot_exact(b), a.dot(b));
+            }
+        }
+    }
+
+    #[test]
+    fn products_at_the_extremes_saturate_to_the_exact_value() {
+        let clamp32 = |v: i128| v.clamp(i32::MIN as i128, i32::MAX as i128) as i32;
+        let round = |v: i128| (v + (1 << 15)) >> 16;
+        for &a in &extreme_vectors() {
+            for &b in &extreme_vectors() {
+                let c = a.cross(b);
+                let p = |u: Fx, v: Fx| u.to_bits() as i128 * v.to_bits() as i128;
+                let want = [
+                    p(a.y, b.z) - p(a.z, b.y),
+                    p(a.z, b.x) - p(a.x, b.z),
+                    p(a.x, b.y) - p(a.y, b.x),
+                ]
+                .map(|v| clamp32(round(v)));
+                assert_eq!([c.x, c.y, c.z].map(Fx::to_bits), want, "{a:?} × {b:?}");
+                let s = a.scale(b.x);
+                let want = [a.x, a.y, a.z].map(|u| clamp32(round(p(u, b.x))));
+                assert_eq!([s.x, s.y, s.z].map(Fx::to_bits), want, "{a:?} · {}", b.x);
+                let sum = a + b;
+                let want = [(a.x, b.x), (a.y, b.y), (a.z, b.z)]
+                    .map(|(u, v)| clamp32(u.to_bits() as i128 + v.to_bits() as i128));
+                assert_eq!([sum.x, sum.y, sum.z].map(Fx::to_bits), want);
+                let diff = a - b;
+                let want = [(a.x, b.x), (a.y, b.y), (a.z, b.z)]
+                    .map(|(u, v)| clamp32(u.to_bits() as i128 - v.to_bits() as i128));
+                assert_eq!([diff.x, diff.y, diff.z].map(Fx::to_bits), want);
+            }
+            let n = -a;
+            let want = [a.x, a.y, a.z].map(|u| clamp32(-(u.to_bits() as i128)));
+            assert_eq!([n.x, n.y, n.z].map(Fx::to_bits), want, "−{a:?}");
+        }
+        // −MIN is one past MAX.
+        assert_eq!(
+            -Vec3::new(Fx::MIN, Fx::MIN, Fx::MIN),
+            Vec3::new(Fx::MAX, Fx::MAX, Fx::MAX)
+        );
+    }
+
+    #[test]
+    fn lengths_and_normals_of_extreme_vectors() {
+        for &a in &extreme_vectors() {
+            let [x, y, z] = [a.x, a.y, a.z].map(|c| c.to_bits() as f64);
+            let exact = (x * x + y * y + z * z).sqrt();
+            let want = (exact.floor() as i64).min(i32::MAX as i64) as i32;
+            // The exact integer square root of the exact square, saturated.
+            assert!((a.length().to_bits() - want).abs() <= 1, "‖{a:?}‖");
+            assert!(a.length() >= Fx::ZERO);
+            let Some(n) = a.try_normalize() else {
+                assert_eq!(a, Vec3::ZERO);
+                continue;
+            };
+            for (got, c) in [(n.x, x), (n.y, y), (n.z, z)] {
+                let want = c / exact * 65536.0;
+                assert!((got.to_bits() as f64 - want).abs() <= 1.0, "{a:?}: {n:?}");
+            }
+            assert_eq!(a.normalize_or_zero(), n);
+        }
     }
 
     #[test]

@@ -76,14 +76,19 @@ impl<const W: usize, const H: usize> ImageDrawable for Framebuffer<W, H> {
     where
         D: DrawTarget<Color = Rgb888>,
     {
-        let Some(bottom_right) = area.bottom_right() else {
+        // The range check in `usize`, checked: embedded-graphics' `bottom_right` adds the size
+        // to the corner in `i32` and overflows for an area near `i32::MAX`.
+        let span = |start: i32, len: u32, limit: usize| {
+            let start = usize::try_from(start).ok()?;
+            let end = start.checked_add(usize::try_from(len).ok()?)?;
+            (len > 0 && end <= limit).then_some(start)
+        };
+        let (Some(x0), Some(y0)) = (
+            span(area.top_left.x, area.size.width, W),
+            span(area.top_left.y, area.size.height, H),
+        ) else {
             return Ok(());
         };
-        if area.top_left.x < 0 || area.top_left.y < 0 || !self.bounding_box().contains(bottom_right)
-        {
-            return Ok(());
-        }
-        let (x0, y0) = (area.top_left.x as usize, area.top_left.y as usize);
         let (w, h) = (area.size.width as usize, area.size.height as usize);
         let pixels = self.rows()[y0..y0 + h]
             .iter()

@@ -1,0 +1,627 @@
+//! Values no constructor would accept, built by hand: `Ray`, `Hit`, `Material`, `Light` and
+//! `Checker` have public fields, `Vec3` holds any Q16.16 value, and display areas any `i32`
+//! corner and `u32` size. Every public function they reach must return without a panic (this
+//! suite runs with overflow checks on) and, where it means something, with a sane answer: a
+//! hit within [0, FAR], a colour, nothing drawn outside the frame.
+
+use core::convert::Infallible;
+
+use embedded_graphics::image::ImageDrawable;
+use embedded_graphics::pixelcolor::{BinaryColor, Rgb888};
+use embedded_graphics::prelude::*;
+use embedded_graphics::primitives::Rectangle;
+use fixray::{
+    Background, Camera, Checker, FAR, Framebuffer, Fx, Hit, LIMIT, Light, Material, Object, Plane,
+    Ray, Rgb, Scene, Shape, Sphere, Vec3, Viewport, demo, render_row,
+};
+
+/// Marsaglia's xorshift64: varied values from a fixed seed, so a failure repeats.
+struct XorShift(u64);
+
+impl XorShift {
+    fn next(&mut self) -> u64 {
+        self.0 ^= self.0 << 13;
+        self.0 ^= self.0 >> 7;
+        self.0 ^= self.0 << 17;
+        self.0
+    }
+}
+
+/// The edges of Q16.16 and of the overflow budget.
+const EDGES: [i32; 13] = [
+    i32::MIN,
+    i32::MIN + 1,
+    -(1024 << 16),
+    -(1 << 16),
+    -1,
+    0,
+    1,
+    1 << 15,
+    1 << 16,
+    (1 << 16) + 1,
+    1024 << 16,
+    i32::MAX - 1,
+    i32::MAX,
+];
+
+/// Hostile values: the edges first, then raw bit patterns of every magnitude.
+fn hostile(rng: &mut XorShift, i: usize) -> Fx {
+    if let Some(&edge) = EDGES.get(i % (2 * EDGES.len())) {
+        return Fx::from_bits(edge);
+    }
+    let seed = rng.next();
+    Fx::from_bits((seed as i32) >> (seed >> 59))
+}
+
+/// A hostile vector: the first `EDGES.len()³` cover every triple of edges, and then each
+/// component is an edge or a random pattern, independently.
+fn hostile_vec(rng: &mut XorShift, i: usize) -> Vec3 {
+    let n = EDGES.len();
+    if i < n * n * n {
+        let edge = |k: usize| Fx::from_bits(EDGES[k % n]);
+        return Vec3::new(edge(i), edge(i / n), edge(i / (n * n)));
+    }
+    let mut component = |k: usize| {
+        let pick = rng.next() as usize;
+        hostile(
+            rng,
+            if pick.is_multiple_of(2) {
+                pick / 2 % n
+            } else {
+                k + 2 * n
+            },
+        )
+    };
+    Vec3::new(component(i), component(i + 1), component(i + 2))
+}
+
+/// The corners of Q16.16 space and its centre: where the exact dot products of a ray's
+/// direction and the vector to a sphere's centre sum to the most.
+fn corners() -> impl Iterator<Item = Vec3> {
+    let c = [Fx::MIN, Fx::ZERO, Fx::MAX];
+    (0..27).map(move |i| Vec3::new(c[i % 3], c[i / 3 % 3], c[i / 9]))
+}
+
+/// A scene with something of everything: a checkered ground, a mirror, a matte ball, a
+/// gradient sky, two lights.
+fn scene(background: Background) -> Scene<4, 2> {
+    let light = Light::new(Vec3::from_ints(-20, 20, 20), Fx::from_num(0.8)).unwrap();
+    let mut scene: Scene<4, 2> = Scene::new(light, Fx::from_num(0.2), background).unwrap();
+    scene
+        .add_light(Light::new(Vec3::from_ints(10, 30, -5), Fx::from_num(1.5)).unwrap())
+        .unwrap();
+    let checker = Material::matte(Rgb::WHITE)
+        .with_checker(Fx::from_num(2), Rgb::BLACK)
+        .unwrap();
+    scene
+        .add_plane(
+            Plane::new(Vec3::from_ints(0, -4, 0), Vec3::Y).unwrap(),
+            checker,
+        )
+        .unwrap();
+    let mirror = Material::new(
+        Rgb::new(200, 200, 255),
+        Fx::from_num(0.2),
+        Fx::from_num(4),
+        1425,
+        Fx::from_num(0.9),
+    )
+    .unwrap();
+    scene
+        .add_sphere(
+            Sphere::new(Vec3::from_ints(0, 0, -12), Fx::from_num(3)).unwrap(),
+            mirror,
+        )
+        .unwrap();
+    scene
+        .add_sphere(
+            Sphere::new(Vec3::from_ints(5, -1, -9), Fx::from_num(2)).unwrap(),
+            Rgb::new(255, 40, 40),
+        )
+        .unwrap();
+    scene
+}
+
+fn gradient() -> Background {
+    Background {
+        top: Rgb::new(20, 40, 200),
+        bottom: Rgb::new(250, 250, 250),
+    }
+}
+
+fn assert_sane_hit(hit: &Hit, what: &str) {
+    assert!(
+        hit.t >= Fx::ZERO && hit.t <= FAR,
+        "{what}: t = {} outside [0, FAR]",
+        hit.t
+    );
+}
+
+// ---------------------------------------------------------------------------------------
+// Vec3 at the ends of Q16.16.
+
+#[test]
+fn dot_of_the_largest_vectors_saturates() {
+    let top = Vec3::new(Fx::MAX, Fx::MAX, Fx::MAX);
+    let bottom = Vec3::new(Fx::MIN, Fx::MIN, Fx::MIN);
+    assert_eq!(top.dot(top), Fx::MAX);
+    assert_eq!(bottom.dot(bottom), Fx::MAX);
+    assert_eq!(top.dot(bottom), Fx::MIN);
+    assert_eq!(bottom.dot(top), Fx::MIN);
+    assert_eq!(top.dot_wide(top), i64::MAX);
+    assert_eq!(top.dot_wide(bottom), i64::MIN);
+    // (MAX, MIN, 0)·(MAX, MAX, 0) = MAX·(MAX + MIN) = −MAX in raw units squared: the sum
+    // of two products near ±2⁶² is small and exact, −½ + 2⁻³², which rounds to −½.
+    let mixed = Vec3::new(Fx::MAX, Fx::MIN, Fx::ZERO);
+    let other = Vec3::new(Fx::MAX, Fx::MAX, Fx::ZERO);
+    assert_eq!(mixed.dot_wide(other), -(i32::MAX as i64));
+    assert_eq!(mixed.dot(other), Fx::from_num(-0.5));
+}
+
+#[test]
+fn vector_arithmetic_at_the_extremes_saturates() {
+    let top = Vec3::new(Fx::MAX, Fx::MAX, Fx::MAX);
+    let bottom = Vec3::new(Fx::MIN, Fx::MIN, Fx::MIN);
+    assert_eq!(-bottom, top);
+    assert_eq!(-top, Vec3::new(-Fx::MAX, -Fx::MAX, -Fx::MAX));
+    assert_eq!(top + top, top);
+    assert_eq!(bottom + bottom, bottom);
+    assert_eq!(top - bottom, top);
+    assert_eq!(bottom - top, bottom);
+    assert_eq!(top.scale(Fx::MAX), top);
+    assert_eq!(top.scale(Fx::MIN), bottom);
+    assert_eq!(bottom.scale(Fx::MIN), top);
+    let c = top.cross(Vec3::new(Fx::MIN, Fx::MAX, Fx::MIN));
+    assert_eq!(c.x, Fx::MIN); // MAX·MIN − MAX·MAX, about −2¹⁵ · 2¹⁶
+    assert_eq!(c.y, Fx::ZERO); // MAX·MIN − MAX·MIN
+    assert_eq!(c.z, Fx::MAX); // MAX·MAX − MAX·MIN
+    assert_eq!(top.length(), Fx::MAX);
+    assert_eq!(bottom.length(), Fx::MAX);
+    let n = bottom.try_normalize().unwrap();
+    let third = -Fx::from_num(0.577_350_3);
+    for c in [n.x, n.y, n.z] {
+        assert!((c - third).abs() <= Fx::from_bits(1), "{n:?}");
+    }
+}
+
+#[test]
+fn vec3_operations_on_hostile_values_return() {
+    let mut rng = XorShift(0x0dd_ba11_cafe_f00d);
+    for i in 0..20_000 {
+        let (a, b) = (hostile_vec(&mut rng, i), hostile_vec(&mut rng, i + 7));
+        let k = hostile(&mut rng, i + 3);
+        let _ = (
+            a.dot(b),
+            a.dot_wide(b),
+            a.cross(b),
+            a.scale(k),
+            a + b,
+            a - b,
+            -a,
+        );
+        assert!(a.length() >= Fx::ZERO);
+        if let Some(n) = a.try_normalize() {
+            let l2 = n.length_squared_wide() as f64 / 2f64.powi(32);
+            assert!((l2 - 1.0).abs() < 1e-3, "{a:?} → {n:?}");
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+// Drawing at the ends of the display coordinates.
+
+/// A target as large as embedded-graphics allows that only counts what it is given.
+struct Counter {
+    pixels: usize,
+    outside: usize,
+}
+
+impl Dimensions for Counter {
+    fn bounding_box(&self) -> Rectangle {
+        Rectangle::new(Point::zero(), Size::new(64, 64))
+    }
+}
+
+impl DrawTarget for Counter {
+    type Color = Rgb888;
+    type Error = Infallible;
+
+    fn draw_iter<I: IntoIterator<Item = Pixel<Rgb888>>>(
+        &mut self,
+        pixels: I,
+    ) -> Result<(), Infallible> {
+        for Pixel(p, _) in pixels {
+            if self.bounding_box().contains(p) {
+                self.pixels += 1;
+            } else {
+                self.outside += 1;
+            }
+        }
+        Ok(())
+    }
+}
+
+fn counter() -> Counter {
+    Counter {
+        pixels: 0,
+        outside: 0,
+    }
+}
+
+#[test]
+fn sub_images_at_the_ends_of_i32_draw_nothing_and_do_not_overflow() {
+    let frame = Framebuffer::<8, 6>::new();
+    let corners = [
+        Point::new(i32::MAX, i32::MAX),
+        Point::new(i32::MAX, 0),
+        Point::new(0, i32::MAX),
+        Point::new(i32::MAX - 1, i32::MAX - 1),
+        Point::new(i32::MIN, i32::MIN),
+        Point::new(i32::MIN, 0),
+        Point::new(0, i32::MIN),
+        Point::new(-1, -1),
+        Point::new(8, 0),
+        Point::new(0, 6),
+    ];
+    let sizes = [
+        Size::new(1, 1),
+        Size::new(u32::MAX, u32::MAX),
+        Size::new(u32::MAX, 1),
+        Size::new(1, u32::MAX),
+        Size::new(i32::MAX as u32, i32::MAX as u32),
+        Size::new(i32::MAX as u32 + 1, 1),
+        Size::new(8, 6),
+    ];
+    for &top_left in &corners {
+        for &size in &sizes {
+            let mut target = counter();
+            frame
+                .draw_sub_image(&mut target, &Rectangle::new(top_left, size))
+                .unwrap();
+            assert_eq!(target.pixels + target.outside, 0, "{top_left:?} {size:?}");
+        }
+    }
+    // From a corner inside the frame, sizes that reach past it, up to u32::MAX.
+    for &size in &sizes[1..6] {
+        for top_left in [Point::zero(), Point::new(7, 5)] {
+            let mut target = counter();
+            frame
+                .draw_sub_image(&mut target, &Rectangle::new(top_left, size))
+                .unwrap();
+            assert_eq!(target.pixels + target.outside, 0, "{top_left:?} {size:?}");
+        }
+    }
+    // What fits is drawn, at the target's origin.
+    for (top_left, size, n) in [
+        (Point::new(7, 5), Size::new(1, 1), 1),
+        (Point::zero(), Size::new(8, 6), 48),
+        (Point::new(2, 1), Size::new(6, 5), 30),
+        (Point::new(3, 3), Size::new(0, 2), 0),
+    ] {
+        let mut target = counter();
+        frame
+            .draw_sub_image(&mut target, &Rectangle::new(top_left, size))
+            .unwrap();
+        assert_eq!(
+            (target.pixels, target.outside),
+            (n, 0),
+            "{top_left:?} {size:?}"
+        );
+    }
+}
+
+/// A one-bit display that accepts any point and counts the ones on it.
+struct AnyPoint {
+    inside: usize,
+}
+
+impl Dimensions for AnyPoint {
+    fn bounding_box(&self) -> Rectangle {
+        Rectangle::new(Point::zero(), Size::new(16, 16))
+    }
+}
+
+impl DrawTarget for AnyPoint {
+    type Color = BinaryColor;
+    type Error = Infallible;
+
+    fn draw_iter<I: IntoIterator<Item = Pixel<BinaryColor>>>(
+        &mut self,
+        pixels: I,
+    ) -> Result<(), Infallible> {
+        for Pixel(p, _) in pixels {
+            self.inside += self.bounding_box().contains(p) as usize;
+        }
+        Ok(())
+    }
+}
+
+#[test]
+fn frames_placed_at_the_ends_of_i32_do_not_overflow() {
+    let frame = Framebuffer::<8, 6>::new();
+    for top_left in [
+        Point::new(i32::MAX, i32::MAX),
+        Point::new(i32::MAX - 7, i32::MAX - 5),
+        Point::new(i32::MAX - 8, i32::MAX - 6),
+        Point::new(i32::MIN, i32::MIN),
+        Point::new(i32::MIN, i32::MAX - 6),
+        Point::new(-4, -3),
+    ] {
+        let mut display = AnyPoint { inside: 0 };
+        frame.draw_at(top_left, &mut display).unwrap();
+        let expected = if top_left == Point::new(-4, -3) {
+            4 * 3
+        } else {
+            0
+        };
+        assert_eq!(display.inside, expected, "{top_left:?}");
+    }
+    // The whole frame as an image.
+    let mut target = counter();
+    frame.draw(&mut target).unwrap();
+    assert_eq!((target.pixels, target.outside), (48, 0));
+}
+
+#[test]
+fn viewports_at_the_ends_of_i32_are_refused_or_drawn_without_overflow() {
+    let (scene, camera) = (demo::scene(), demo::camera(8, 6).unwrap());
+    let size = Size::new(8, 6);
+    for top_left in [
+        Point::new(i32::MAX, i32::MAX),
+        Point::new(i32::MAX - 7, 0),
+        Point::new(0, i32::MAX - 5),
+    ] {
+        assert!(Viewport::new(&scene, &camera, Rectangle::new(top_left, size)).is_err());
+    }
+    for top_left in [
+        Point::new(i32::MAX - 8, i32::MAX - 6),
+        Point::new(i32::MIN, i32::MIN),
+    ] {
+        let view = Viewport::new(&scene, &camera, Rectangle::new(top_left, size)).unwrap();
+        let mut display = AnyPoint { inside: 0 };
+        let mut band = [Rgb::BLACK; 8 * 2];
+        for rows in view.bands(2) {
+            view.render_rows(rows, &mut band, &mut display).unwrap();
+        }
+        assert_eq!(display.inside, 0, "{top_left:?}");
+    }
+    for size in [Size::new(u32::MAX, u32::MAX), Size::new(8, u32::MAX)] {
+        assert!(Viewport::new(&scene, &camera, Rectangle::new(Point::zero(), size)).is_err());
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+// Hand-built rays, hits, materials, lights and checkers.
+
+#[test]
+fn the_reproducers_return() {
+    let up = Ray {
+        origin: Vec3::ZERO,
+        dir: Vec3::new(Fx::ZERO, Fx::MAX, Fx::ZERO),
+    };
+    let sky = scene(gradient());
+    assert_eq!(
+        sky.trace(&up),
+        sky.trace(&Ray::new(Vec3::ZERO, Vec3::Y).unwrap())
+    );
+    for dir in [
+        Vec3::new(Fx::MAX, Fx::MAX, Fx::MAX),
+        Vec3::new(Fx::MIN, Fx::MIN, Fx::MIN),
+    ] {
+        let ray = Ray {
+            origin: Vec3::ZERO,
+            dir,
+        };
+        for s in [scene(gradient()), scene(Rgb::BLACK.into())] {
+            if let Some(hit) = s.shoot(&ray) {
+                assert_sane_hit(&hit, "huge direction");
+            }
+            let _ = s.trace(&ray);
+        }
+        let ball = Sphere::new(Vec3::from_ints(0, 0, -10), Fx::from_num(2)).unwrap();
+        // From the far corners every product of the exact dot product is near 2⁶².
+        for origin in [
+            Vec3::ZERO,
+            Vec3::new(Fx::MIN, Fx::MIN, Fx::MIN),
+            Vec3::new(Fx::MAX, Fx::MAX, Fx::MAX),
+        ] {
+            let ray = Ray { origin, dir };
+            if let Some(t) = ball.hit_distance(&ray) {
+                assert!(t >= Fx::ZERO && t <= FAR);
+            }
+            let _ = ball.intersect(&ray);
+            let _ = scene(gradient()).trace(&ray);
+        }
+    }
+    // A normal far from unit length on a mirror.
+    let s = scene(gradient());
+    let ray = Ray::new(Vec3::ZERO, -Vec3::Z).unwrap();
+    let mut hit = s.shoot(&ray).unwrap();
+    assert_eq!(hit.object, 1, "the mirror ball");
+    for normal in [
+        Vec3::new(Fx::MAX, Fx::MAX, Fx::MAX),
+        Vec3::new(Fx::MIN, Fx::MIN, Fx::MIN),
+        Vec3::new(Fx::ZERO, Fx::ZERO, Fx::MAX),
+        Vec3::ZERO,
+    ] {
+        hit.normal = normal;
+        let _ = s.shade(&ray, Some(&hit));
+    }
+}
+
+#[test]
+fn shooting_and_tracing_hand_built_rays_returns_sane_hits() {
+    let mut rng = XorShift(0x5eed_0f4a_75ee_d001);
+    let scenes = [scene(gradient()), scene(Rgb::new(10, 20, 30).into())];
+    let ball = Sphere::new(Vec3::from_ints(0, 0, -10), Fx::from_num(2)).unwrap();
+    let wall = Plane::new(Vec3::from_ints(0, 0, -20), Vec3::from_ints(1, 0, 1)).unwrap();
+    let corner_rays = corners().flat_map(|origin| corners().map(move |dir| Ray { origin, dir }));
+    let hostile_rays = (0..4_000).map(|i| Ray {
+        origin: if i % 3 == 0 {
+            Vec3::ZERO
+        } else {
+            hostile_vec(&mut XorShift(i as u64 + 1), i + 7)
+        },
+        dir: hostile_vec(&mut XorShift(i as u64 + 99), (i * 7) % 4_000),
+    });
+    for (i, ray) in corner_rays.chain(hostile_rays).enumerate() {
+        let _ = ray.at(hostile(&mut rng, i));
+        for shape in [Shape::Sphere(ball), Shape::Plane(wall)] {
+            if let Some(hit) = shape.intersect(&ray) {
+                assert_sane_hit(&hit, "shape");
+            }
+            if let Some(t) = shape.hit_distance(&ray) {
+                assert!(t >= Fx::ZERO && t <= FAR, "{ray:?}: {t}");
+            }
+            let _ = shape.hit_at(&ray, hostile(&mut rng, i + 1));
+        }
+        let s = &scenes[i % 2];
+        if let Some(hit) = s.shoot(&ray) {
+            assert_sane_hit(&hit, "scene");
+            assert!(hit.object < s.objects().len());
+            let _ = s.shade(&ray, Some(&hit));
+        }
+        let _ = s.shoot_among(&ray, rng.next());
+        let _ = s.trace(&ray);
+        let _ = s.shade(&ray, None);
+    }
+}
+
+#[test]
+fn shading_hand_built_hits_returns_a_colour() {
+    let mut rng = XorShift(0x0123_4567_89ab_cdef);
+    let scenes = [scene(gradient()), scene(Rgb::WHITE.into())];
+    for i in 0..4_000 {
+        let ray = if i % 2 == 0 {
+            Ray::new(Vec3::ZERO, -Vec3::Z).unwrap()
+        } else {
+            Ray {
+                origin: hostile_vec(&mut rng, i + 11),
+                dir: hostile_vec(&mut rng, i + 13),
+            }
+        };
+        let hit = Hit {
+            t: hostile(&mut rng, i),
+            point: hostile_vec(&mut rng, i + 1),
+            normal: hostile_vec(&mut rng, i + 2),
+            // Every object, and indices past the last.
+            object: [0, 1, 2, 3, usize::MAX][i % 5],
+        };
+        let s = &scenes[(i / 5) % 2];
+        let _ = s.shade(&ray, Some(&hit));
+    }
+}
+
+fn hostile_material(rng: &mut XorShift, i: usize) -> Material {
+    Material {
+        colour: Rgb::new(rng.next() as u8, rng.next() as u8, rng.next() as u8),
+        diffuse: hostile(rng, i),
+        specular: hostile(rng, i + 1),
+        shininess: [0, 1, 2, 4096, u16::MAX, rng.next() as u16][i % 6],
+        reflect: hostile(rng, i + 2),
+        checker: (!i.is_multiple_of(3)).then(|| Checker {
+            size: hostile(rng, i + 3),
+            other: Rgb::new(rng.next() as u8, 0, 255),
+        }),
+    }
+}
+
+fn hostile_light(rng: &mut XorShift, i: usize) -> Light {
+    Light {
+        position: hostile_vec(rng, i),
+        intensity: hostile(rng, i + 4),
+    }
+}
+
+#[test]
+fn hand_built_materials_lights_and_checkers_render_and_trace() {
+    let mut rng = XorShift(0xfeed_beef_dead_c0de);
+    let camera = Camera::look_at(
+        [0.0, 1.0, 4.0],
+        [0.0, -1.0, -12.0],
+        [0.0, 1.0, 0.0],
+        70.0,
+        12,
+        9,
+    )
+    .unwrap();
+    let mut row = [Rgb::BLACK; 12];
+    for i in 0..120 {
+        let background = if i % 2 == 0 {
+            gradient()
+        } else {
+            Background::plain(Rgb::new(1, 2, 3))
+        };
+        let Ok(mut s) =
+            Scene::<5, 3>::new(hostile_light(&mut rng, i), Fx::from_num(0.3), background)
+        else {
+            continue;
+        };
+        s.add_light(hostile_light(&mut rng, i + 1)).unwrap();
+        s.add_plane(
+            Plane::new(Vec3::from_ints(0, -4, 0), Vec3::Y).unwrap(),
+            hostile_material(&mut rng, i),
+        )
+        .unwrap();
+        s.add(Object {
+            shape: Shape::Sphere(Sphere::new(Vec3::from_ints(0, 0, -12), Fx::from_num(3)).unwrap()),
+            material: hostile_material(&mut rng, i + 1),
+        })
+        .unwrap();
+        s.add_sphere(
+            Sphere::new(Vec3::from_ints(4, -1, -8), Fx::ONE).unwrap(),
+            hostile_material(&mut rng, i + 2),
+        )
+        .unwrap();
+        s.add_plane(
+            Plane::new(Vec3::from_ints(0, 0, -40), Vec3::Z).unwrap(),
+            hostile_material(&mut rng, i + 3),
+        )
+        .unwrap();
+        s.set_shadows(i % 4 != 1);
+        s.set_depth((i % 6) as u8);
+        for r in 0..camera.rows() {
+            render_row(&s, &camera, r, &mut row).unwrap();
+            // render_row is trace, pixel by pixel, whatever the materials hold.
+            for (col, &pixel) in row.iter().enumerate() {
+                assert_eq!(
+                    pixel,
+                    s.trace(&camera.ray(r, col as u16)),
+                    "row {r} col {col}"
+                );
+            }
+        }
+        let hit = Hit {
+            t: Fx::ONE,
+            point: hostile_vec(&mut rng, i),
+            normal: hostile_vec(&mut rng, i + 9),
+            object: i % 4,
+        };
+        let _ = s.shade(&camera.ray(4, 6), Some(&hit));
+    }
+}
+
+#[test]
+fn checkers_of_any_size_give_one_of_their_two_colours() {
+    let mut rng = XorShift(0xc4ec_6e75_0000_0001);
+    let (even, odd) = (Rgb::new(1, 1, 1), Rgb::new(2, 2, 2));
+    for i in 0..20_000 {
+        let checker = Checker {
+            size: hostile(&mut rng, i),
+            other: odd,
+        };
+        let uv = [hostile(&mut rng, i + 1), hostile(&mut rng, i + 2)];
+        let c = checker.colour_at(even, uv);
+        assert!(c == even || c == odd);
+        if checker.size <= Fx::ZERO {
+            assert_eq!(c, even, "a square of no size is one colour");
+        }
+    }
+    // The documented limit still tiles.
+    let big = Checker {
+        size: LIMIT,
+        other: odd,
+    };
+    assert_eq!(big.colour_at(even, [Fx::ZERO, Fx::ZERO]), even);
+    assert_eq!(big.colour_at(even, [-Fx::from_bits(1), Fx::ZERO]), odd);
+}
