@@ -189,6 +189,19 @@ const fn bit_length_u32(mut x: u32) -> u32 {
     n + NIBBLE[x as usize] as u32
 }
 
+/// `x` clamped to `[low, high]`, for `const` constructors (`Ord::clamp` is not `const`).
+#[inline]
+#[must_use]
+pub(crate) const fn clamp_raw(x: i32, low: i32, high: i32) -> i32 {
+    if x < low {
+        low
+    } else if x > high {
+        high
+    } else {
+        x
+    }
+}
+
 /// A Q32.32 raw value rounded (half up) back to Q16.16, saturating at the ends of the range.
 #[inline]
 #[must_use]

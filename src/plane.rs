@@ -96,21 +96,24 @@ impl Plane {
 
     /// A plane whose values the caller promises are valid: `point` within ±1024 and `normal`
     /// a unit vector. For `const` scenes.
+    ///
+    /// A debug build asserts the promise. A release build clamps the point to ±1024 and each
+    /// component of the normal to ±1, so that a broken promise draws a wrong plane rather than
+    /// overflowing in the render path.
     #[must_use]
     pub const fn new_unchecked(point: Vec3, normal: Vec3) -> Self {
         let limit = crate::LIMIT.to_bits();
         debug_assert!(
-            point.x.to_bits().abs() <= limit
-                && point.y.to_bits().abs() <= limit
-                && point.z.to_bits().abs() <= limit,
+            point.within_raw(limit),
             "Plane::new_unchecked: the point must lie within ±1024"
         );
-        // A normalised vector's components are each within 2⁻¹⁶ of exact, which keeps its
-        // squared length within 2√3·2⁻¹⁶ of 1: 2⁻¹³ leaves room to spare.
         debug_assert!(
-            normal.length_squared_wide().abs_diff(1 << 32) <= 1 << 19,
+            crate::ray::is_unit(normal),
             "Plane::new_unchecked: the normal must be a unit vector"
         );
+        // Clamped, a broken promise still keeps Eq. 4.2's products and the far-clip test
+        // inside 64 bits: a wrong plane, not an overflow.
+        let (point, normal) = (point.clamp_raw(limit), normal.clamp_raw(1 << 16));
         Plane {
             point,
             normal,
@@ -220,6 +223,13 @@ impl Plane {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    #[cfg(debug_assertions)]
+    #[should_panic(expected = "Plane::new_unchecked")]
+    fn a_broken_promise_is_caught_in_debug_builds() {
+        let _ = Plane::new_unchecked(Vec3::ZERO, Vec3::new(Fx::MAX, Fx::MAX, Fx::MAX));
+    }
 
     fn ray(o: [f32; 3], d: [f32; 3]) -> Ray {
         Ray::new(

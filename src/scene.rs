@@ -379,6 +379,10 @@ impl<const N: usize, const L: usize> Scene<N, L> {
 
     /// The colour seen along `ray` when it has this first hit: the background for a miss,
     /// otherwise the lit surface plus what its mirror shows (see [`Material`]).
+    ///
+    /// `hit` is meant to come from [`Scene::shoot`], but it may be built by hand: a normal
+    /// that is not a unit vector saturates the arithmetic instead of overflowing it, and an
+    /// object index past the last shades as a miss.
     #[must_use]
     pub fn shade(&self, ray: &Ray, hit: Option<&Hit>) -> Rgb {
         crate::shading::to_rgb(self.radiance(ray, hit.copied()))

@@ -56,6 +56,10 @@ impl Sphere {
 
     /// A sphere whose values the caller promises are valid (`0 < radius ≤ 1024`, centre
     /// within ±1024). For `const` scenes.
+    ///
+    /// A debug build asserts the promise. A release build clamps values outside it into
+    /// range (the radius to `[2⁻¹⁶, 1024]`, each coordinate of the centre to ±1024), so that a
+    /// broken promise draws a wrong sphere rather than overflowing in the render path.
     #[must_use]
     pub const fn new_unchecked(centre: Vec3, radius: Fx) -> Self {
         let limit = crate::LIMIT.to_bits();
@@ -64,17 +68,13 @@ impl Sphere {
             "Sphere::new_unchecked: the radius must lie in (0, 1024]"
         );
         debug_assert!(
-            centre.x.to_bits().abs() <= limit
-                && centre.y.to_bits().abs() <= limit
-                && centre.z.to_bits().abs() <= limit,
+            centre.within_raw(limit),
             "Sphere::new_unchecked: the centre must lie within ±1024"
         );
+        let centre = centre.clamp_raw(limit);
+        let radius = Fx::from_bits(fx::clamp_raw(radius.to_bits(), 1, limit));
         // r in raw units lies in [2^k, 2^(k+1)); 2^(31+k)/r then lies in (2³⁰, 2³¹].
-        let r = if radius.to_bits() > 0 {
-            radius.to_bits() as u64
-        } else {
-            1
-        };
+        let r = radius.to_bits() as u64;
         let k = 63 - r.leading_zeros();
         let inv = (1u64 << (31 + k)) / r;
         Sphere {
@@ -220,6 +220,13 @@ impl Sphere {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    #[cfg(debug_assertions)]
+    #[should_panic(expected = "Sphere::new_unchecked")]
+    fn a_broken_promise_is_caught_in_debug_builds() {
+        let _ = Sphere::new_unchecked(Vec3::ZERO, Fx::MIN);
+    }
 
     fn ball() -> Sphere {
         Sphere::new(Vec3::from_ints(0, 0, -10), Fx::from_num(2)).unwrap()

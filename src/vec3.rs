@@ -178,6 +178,14 @@ impl Vec3 {
             + fx::wide_mul(self.z.to_bits(), o.z.to_bits())
     }
 
+    /// Each raw component clamped to `±bound`.
+    pub(crate) const fn clamp_raw(self, bound: i32) -> Vec3 {
+        const fn c(v: Fx, bound: i32) -> Fx {
+            Fx::from_bits(fx::clamp_raw(v.to_bits(), -bound, bound))
+        }
+        Vec3::new(c(self.x, bound), c(self.y, bound), c(self.z, bound))
+    }
+
     /// Whether every raw component lies within `±bound`.
     pub(crate) const fn within_raw(self, bound: i32) -> bool {
         const fn within(c: Fx, bound: i32) -> bool {
