@@ -151,11 +151,11 @@ pub fn vec_any(src: &mut impl Source) -> Vec3 {
     Vec3::new(fx_any(src), fx_any(src), fx_any(src))
 }
 
-/// A vector of `f32` components around `typical`, as fixray rounds them (the caller's `f32`
+/// A vector of finite `f32` components around `typical` (never hostile), as fixray rounds them (the caller's `f32`
 /// values are converted exactly as [`Vec3::from_f32`] does: `Fx::from_num`).
 pub fn vec_within(src: &mut impl Source, typical: f32) -> Vec3 {
     fn c(s: &mut impl Source, typical: f32) -> Fx {
-        Fx::from_num(f32_around(s, typical, u64::MAX).clamp(-1024.0, 1024.0))
+        Fx::from_num(s.uniform(typical).clamp(-1024.0, 1024.0))
     }
     Vec3::new(c(src, typical), c(src, typical), c(src, typical))
 }
