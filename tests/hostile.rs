@@ -1,0 +1,749 @@
+//! Hostile input, many times over: random scenes, cameras, rows, viewports and supersampling
+//! factors, with out-of-range and non-finite values, degenerate cameras, scenes past 64
+//! objects, and hand-built values that skip every check. In the debug build `cargo test` runs,
+//! overflow checks are on, so a wrapping operation is a panic and fails the case.
+//!
+//! Each test runs a number of seeded cases (a few seconds in all by default) and fails with the
+//! seed of every failing case and its description. Environment:
+//! - `FIXRAY_HOSTILE_CASES=1000000` runs that many cases per test (a long run);
+//! - `FIXRAY_HOSTILE_SEED=0x…` runs the one case of that seed (to reproduce a failure).
+//!
+//! The checks themselves live in `common/mod.rs`, shared with the `cargo fuzz` target in
+//! `fuzz/`. Every public item of fixray is called somewhere here or there:
+//! - numbers: `Fx`, `fx_from_f32`, `mul`, `isqrt`, `LIMIT`, `FAR`, `Vec3` (`new`, `from_ints`,
+//!   `from_f32`, `check_range`, `to_f64`, `scale`, `dot_wide`, `dot`, `cross`,
+//!   `length_squared_wide`, `length`, `try_normalize`, `normalize_or_zero`, `+`, `-`, negation);
+//! - geometry: `Ray` (`new`, `new_unchecked`, `at`), `Plane` (`new`, `new_unchecked`, `bounded`,
+//!   `coords`, `bounds`, `point`, `normal`, `distance`, `intersect`, `hit_distance`, `hit_at`),
+//!   `Sphere` (`new`, `new_unchecked`, `centre`, `radius`, `intersect`, `hit_distance`,
+//!   `hit_at`, `normal_at`), `Hit`, `Shape` (`intersect`, `hit_distance`, `hit_at`);
+//! - the world: `Scene` (`new`, `add`, `add_sphere`, `add_plane`, `add_light`, `set_shadows`,
+//!   `set_depth`, `objects`, `lights`, `ambient`, `background`, `shadows`, `depth`, `shoot`,
+//!   `seen_from_row`, `shoot_among`, `shade`, `trace`), `Object::colour_at`, `Material`
+//!   (`matte`, `new`, `with_checker`, `From<Rgb>`), `Checker::colour_at`, `Light` (`new`,
+//!   `new_unchecked`), `Background` (`plain`, `From<Rgb>`), `Rgb`, `Error` (`Display`);
+//! - viewing: `Camera` (`pinhole`, `look_at`, `orbit`, `cols`, `rows`, `eye`, `pixel_centre`,
+//!   `ray`, `row_rays`, `sample_ray`), `RowRays`, `MAX_PIXELS`;
+//! - output: `render`, `render_row`, `render_row_supersampled`, `shoot_row`,
+//!   `shoot_row_skipping`, `Framebuffer` (`new`, `width`, `height`, `pixel`, `set_pixel`,
+//!   `rows`, `rows_mut`, `bytes`, `draw_at`, and as `DrawTarget`, `GetPixel`, `ImageDrawable`),
+//!   `FrameHash`;
+//! - `draw`: `Viewport` (`new`, `area`, `render_rows`, `render`, `bands`), `Bands`, `FromRgb`
+//!   for each colour type, `dither`, `luma`, `bayer_index`, `BAYER_8X8`, `LUMA_MAX`,
+//!   `DrawError`;
+//! - `demo`: `scene`, `camera`, `classic`, `classic_camera`, `BACKGROUND`, `SCREEN_HEIGHT`,
+//!   `SCREEN_DISTANCE`, `CLASSIC_FOV_DEGREES`.
+//!
+//! The `reference` module (feature `reference`) is the f64 model the other tests judge by; it
+//! is not fed hostile input here.
+
+mod common;
+
+use std::cell::RefCell;
+use std::collections::BTreeMap;
+use std::panic::{self, AssertUnwindSafe};
+use std::sync::Once;
+
+use common::{Source, XorShift};
+use embedded_graphics::prelude::Point;
+use fixray::draw::{self, FromRgb};
+use fixray::{
+    Background, Camera, Checker, Error, FAR, Fx, Hit, LIMIT, Light, Material, Object, Plane, Ray,
+    Rgb, Scene, Shape, Sphere, Vec3, demo,
+};
+
+// ---------------------------------------------------------------------------------------------
+// The harness: seeded cases, each panic caught and reported with its seed.
+// ---------------------------------------------------------------------------------------------
+
+thread_local! {
+    /// The last panic's message and place on this thread, while a case runs.
+    static CAUGHT: RefCell<Option<String>> = const { RefCell::new(None) };
+    static QUIET: RefCell<bool> = const { RefCell::new(false) };
+}
+
+/// Panics inside a case are recorded instead of printed; any other panic prints as usual.
+fn install_hook() {
+    static ONCE: Once = Once::new();
+    ONCE.call_once(|| {
+        let default = panic::take_hook();
+        panic::set_hook(Box::new(move |info| {
+            if QUIET.with(|q| *q.borrow()) {
+                let place = info
+                    .location()
+                    .map(|l| format!("{}:{}", l.file(), l.line()))
+                    .unwrap_or_default();
+                let message = info
+                    .payload()
+                    .downcast_ref::<String>()
+                    .cloned()
+                    .or_else(|| info.payload().downcast_ref::<&str>().map(|s| s.to_string()))
+                    .unwrap_or_default();
+                CAUGHT.with(|c| *c.borrow_mut() = Some(format!("{place}: {message}")));
+            } else {
+                default(info);
+            }
+        }));
+    });
+}
+
+fn env_u64(name: &str) -> Option<u64> {
+    let v = std::env::var(name).ok()?;
+    let v = v.trim();
+    match v.strip_prefix("0x") {
+        Some(hex) => u64::from_str_radix(hex, 16).ok(),
+        None => v.parse().ok(),
+    }
+}
+
+/// Runs `cases` seeded cases of `body` (or `FIXRAY_HOSTILE_CASES`, or the one
+/// `FIXRAY_HOSTILE_SEED`), and fails listing each distinct failure: where it panicked, how
+/// many cases did, the first seed, and the case `describe` gives for it.
+fn run<D: std::fmt::Debug>(
+    test: &str,
+    cases: u64,
+    describe: impl Fn(&mut XorShift) -> D,
+    body: impl Fn(&mut XorShift),
+) {
+    install_hook();
+    let seeds: Vec<u64> = match env_u64("FIXRAY_HOSTILE_SEED") {
+        Some(seed) => vec![seed],
+        None => {
+            let n = env_u64("FIXRAY_HOSTILE_CASES").unwrap_or(cases);
+            // The test's name keeps the tests' seeds apart.
+            let base = test
+                .bytes()
+                .fold(0u64, |h, b| h.wrapping_mul(31).wrapping_add(b as u64));
+            (0..n)
+                .map(|i| base.wrapping_mul(1 << 20).wrapping_add(i))
+                .collect()
+        }
+    };
+    // One seed asked for: its panic prints in full (with RUST_BACKTRACE=1, where it came from).
+    let quiet = env_u64("FIXRAY_HOSTILE_SEED").is_none();
+    let mut failures: BTreeMap<String, (u64, u64, String)> = BTreeMap::new();
+    for &seed in &seeds {
+        QUIET.with(|q| *q.borrow_mut() = quiet);
+        let result = panic::catch_unwind(AssertUnwindSafe(|| body(&mut XorShift::new(seed))));
+        QUIET.with(|q| *q.borrow_mut() = false);
+        if result.is_err() {
+            let message = CAUGHT
+                .with(|c| c.borrow_mut().take())
+                .unwrap_or("(printed above)".into());
+            // One entry per place in the code that panicked.
+            let key: String = message.split(": ").next().unwrap_or("").to_string();
+            let entry = failures.entry(key).or_insert_with(|| {
+                let description = format!("{:#?}", describe(&mut XorShift::new(seed)));
+                (0, seed, format!("{message}\n{}", shorten(&description)))
+            });
+            entry.0 += 1;
+        }
+    }
+    if !failures.is_empty() {
+        let mut report = format!(
+            "{} of {} cases failed in {} ways:\n",
+            failures.values().map(|f| f.0).sum::<u64>(),
+            seeds.len(),
+            failures.len()
+        );
+        for (count, seed, text) in failures.values() {
+            report.push_str(&format!(
+                "\n--- {count} case(s); first: FIXRAY_HOSTILE_SEED={seed:#x} cargo test --test \
+                 hostile {test}\n{text}\n"
+            ));
+        }
+        panic!("{report}");
+    }
+}
+
+/// A long description cut to its first lines (scenes of 130 objects print long).
+fn shorten(s: &str) -> String {
+    let lines: Vec<&str> = s.lines().collect();
+    if lines.len() <= 80 {
+        s.to_string()
+    } else {
+        format!(
+            "{}\n… ({} more lines)",
+            lines[..80].join("\n"),
+            lines.len() - 80
+        )
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Whole scenes
+// ---------------------------------------------------------------------------------------------
+
+/// Random scenes (up to 140 objects, the interesting ones past the 64th in the big ones),
+/// cameras of every kind with hostile values, rows on and off the screen, viewports,
+/// framebuffers and supersampling; every assertion group of `common`.
+#[test]
+fn random_scenes_cameras_and_rows() {
+    run("random_scenes_cameras_and_rows", 160, common::case, |src| {
+        let case = common::case(src);
+        common::run_case(src, &case);
+    });
+}
+
+/// The demo and classic scenes through hostile cameras, rows and viewports.
+#[test]
+fn demo_scenes_through_hostile_cameras() {
+    run(
+        "demo_scenes_through_hostile_cameras",
+        60,
+        |src| common::camera_spec(src, 3),
+        |src| {
+            let spec = common::camera_spec(src, 3);
+            let Some(camera) = common::check_camera_spec(&spec, false) else {
+                return;
+            };
+            let scene = if src.one_in(2) {
+                demo::scene()
+            } else {
+                demo::classic()
+            };
+            let (cols, rows) = (camera.cols() as usize, camera.rows() as usize);
+            let all_rows = cols * rows <= 40 * 30;
+            let rows_checked: Vec<u16> = if all_rows {
+                (0..camera.rows())
+                    .chain([camera.rows(), u16::MAX])
+                    .collect()
+            } else {
+                vec![0, camera.rows() - 1, camera.rows()]
+            };
+            let mut frame = vec![Vec::new(); if all_rows { rows } else { 0 }];
+            for row in rows_checked {
+                let line = common::check_row(&scene, &camera, row);
+                if let Some(slot) = frame.get_mut(row as usize) {
+                    *slot = line;
+                }
+            }
+            if all_rows {
+                common::check_viewport(src, &scene, &camera, &frame);
+                common::check_framebuffer::<8, 12, 9>(src, &scene, &camera, &frame);
+            }
+            common::check_rays_past_the_screen(&spec, &camera);
+        },
+    );
+}
+
+/// The demo module's own cameras at hostile sizes: refused exactly where the screen has no
+/// pixels or more than 4096 a side.
+#[test]
+fn demo_cameras_at_hostile_sizes() {
+    run(
+        "demo_cameras_at_hostile_sizes",
+        200,
+        |_| (),
+        |src| {
+            let pick = |s: &mut XorShift| s.pick(&[0, 1, 2, 3, 160, 4096, 4097, u16::MAX]);
+            let (cols, rows) = (pick(src), pick(src));
+            let bad = cols == 0 || rows == 0 || cols > 4096 || rows > 4096;
+            for camera in [demo::camera(cols, rows), demo::classic_camera(cols, rows)] {
+                match camera {
+                    // [ASSERT: Err for invalid input]
+                    Err(_) if bad => {}
+                    Err(e) if 2 * cols as u32 > 1024 * rows as u32 => {
+                        // The demo's screen is 2 units high and its pixels square: wider than
+                        // 512 pixels per row it is more than 1024 units wide, out of range.
+                        assert!(matches!(e, Error::OutOfRange { .. }), "{e}");
+                    }
+                    Err(e) => panic!("demo camera {cols}×{rows} refused: {e}"),
+                    Ok(c) => {
+                        assert!(!bad, "demo camera {cols}×{rows} must be refused");
+                        assert_eq!((c.cols(), c.rows()), (cols, rows));
+                        let _ = c.ray(rows - 1, cols - 1);
+                    }
+                }
+            }
+            assert_eq!(demo::SCREEN_HEIGHT, 2.0);
+            // The demo's screen: SCREEN_HEIGHT at SCREEN_DISTANCE, the classic's field of view.
+            let half = (demo::SCREEN_HEIGHT / 2.0 / demo::SCREEN_DISTANCE)
+                .atan()
+                .to_degrees();
+            assert!(
+                (2.0 * half - demo::CLASSIC_FOV_DEGREES).abs() < 1e-3,
+                "both are 60°"
+            );
+            assert_eq!(
+                demo::scene().background(),
+                Background::plain(demo::BACKGROUND)
+            );
+        },
+    );
+}
+
+// ---------------------------------------------------------------------------------------------
+// Constructors
+// ---------------------------------------------------------------------------------------------
+
+/// Hostile values for every checked constructor: `Err` exactly where the documented ranges
+/// are left, and an accepted value that holds what was asked.
+#[test]
+fn constructors_refuse_exactly_the_invalid_values() {
+    run(
+        "constructors_refuse_exactly_the_invalid_values",
+        3000,
+        |_| (),
+        |src| {
+            let in_limit = |v: Fx| v >= -LIMIT && v <= LIMIT;
+            let vec_in_limit = |v: Vec3| in_limit(v.x) && in_limit(v.y) && in_limit(v.z);
+
+            // [ASSERT: Err for invalid input] fx_from_f32 and Vec3::from_f32.
+            let f = common::f32_around(src, 2000.0, 3);
+            match fixray::fx_from_f32(f, "x") {
+                Ok(v) => {
+                    assert!(f.is_finite() && f.abs() <= 1024.0, "{f} accepted");
+                    assert_eq!(v, Fx::from_num(f), "{f} converts to the nearest Q16.16");
+                }
+                Err(Error::NotFinite { what: "x" }) => assert!(!f.is_finite(), "{f}"),
+                Err(Error::OutOfRange { what: "x", .. }) => {
+                    assert!(f.is_finite() && f.abs() > 1024.0, "{f}")
+                }
+                Err(e) => panic!("{f}: wrong error {e}"),
+            }
+            let v3 = [
+                common::f32_around(src, 1500.0, 4),
+                common::f32_around(src, 1500.0, 4),
+                common::f32_around(src, 1500.0, 4),
+            ];
+            let ok = v3.iter().all(|c| c.is_finite() && c.abs() <= 1024.0);
+            assert_eq!(Vec3::from_f32(v3, "v").is_ok(), ok, "{v3:?}");
+
+            // [ASSERT: Err for invalid input] Ray::new: origin in range, direction non-zero.
+            let (origin, dir) = (common::vec_any(src), common::direction(src));
+            match Ray::new(origin, dir) {
+                Ok(ray) => {
+                    assert!(
+                        vec_in_limit(origin) && dir != Vec3::ZERO,
+                        "{origin:?} {dir:?}"
+                    );
+                    let len = common::length(ray.dir);
+                    assert!((len - 1.0).abs() <= common::UNIT_TOLERANCE, "{ray:?}");
+                    assert_eq!(ray.at(Fx::ZERO), origin);
+                }
+                Err(e) => assert!(!vec_in_limit(origin) || dir == Vec3::ZERO, "{e}"),
+            }
+
+            // [ASSERT: Err for invalid input] Sphere::new: centre in range, 0 < r ≤ 1024.
+            let (centre, radius) = (common::vec_any(src), common::fx_any(src));
+            match Sphere::new(centre, radius) {
+                Ok(s) => {
+                    assert!(vec_in_limit(centre) && radius > Fx::ZERO && radius <= LIMIT);
+                    assert_eq!((s.centre(), s.radius()), (centre, radius));
+                    assert_eq!(s, Sphere::new_unchecked(centre, radius));
+                    // The normal at the top of the sphere.
+                    let top = centre + Vec3::new(Fx::ZERO, radius, Fx::ZERO);
+                    assert_eq!(s.normal_at(top), Vec3::Y, "{s:?}");
+                }
+                Err(Error::NonPositiveRadius) => assert!(radius <= Fx::ZERO),
+                Err(e) => assert!(!vec_in_limit(centre) || radius > LIMIT, "{e}"),
+            }
+
+            // [ASSERT: Err for invalid input] Plane::new and bounded.
+            let (point, normal) = (common::vec_any(src), common::direction(src));
+            match Plane::new(point, normal) {
+                Ok(p) => {
+                    assert!(vec_in_limit(point) && normal != Vec3::ZERO);
+                    let len = common::length(p.normal());
+                    assert!((len - 1.0).abs() <= common::UNIT_TOLERANCE, "{p:?}");
+                    assert_eq!(p.point(), point);
+                    assert_eq!(p.distance(point), Fx::ZERO);
+                    let (lo, hi) = (
+                        [common::fx_any(src), common::fx_any(src)],
+                        [common::fx_any(src), common::fx_any(src)],
+                    );
+                    let ok = [lo[0], lo[1], hi[0], hi[1]].into_iter().all(in_limit)
+                        && lo[0] < hi[0]
+                        && lo[1] < hi[1];
+                    match p.bounded(lo, hi) {
+                        Ok(b) => {
+                            assert!(ok, "bounds {lo:?} {hi:?} accepted");
+                            assert_eq!(b.bounds(), Some([lo, hi]));
+                            let _ = b.coords(point);
+                        }
+                        Err(_) => assert!(!ok, "bounds {lo:?} {hi:?} refused"),
+                    }
+                }
+                Err(e) => assert!(!vec_in_limit(point) || normal == Vec3::ZERO, "{e}"),
+            }
+
+            // [ASSERT: Err for invalid input] Light::new: position in range, 0 ≤ I ≤ 4.
+            let (position, intensity) = (common::vec_any(src), common::fx_any(src));
+            let ok =
+                vec_in_limit(position) && intensity >= Fx::ZERO && intensity <= Fx::from_num(4);
+            assert_eq!(
+                Light::new(position, intensity).is_ok(),
+                ok,
+                "{position:?} {intensity}"
+            );
+
+            // [ASSERT: Err for invalid input] Material::new and with_checker.
+            let (d, s, r) = (
+                common::fx_any(src),
+                common::fx_any(src),
+                common::fx_any(src),
+            );
+            let shininess = src.pick(&[0, 1, 50, 4096, 4097, u16::MAX]);
+            let within = |v: Fx, max: i32| v >= Fx::ZERO && v <= Fx::from_num(max);
+            let ok =
+                within(d, 2) && within(s, 16) && within(r, 1) && (1..=4096).contains(&shininess);
+            let material = Material::new(Rgb::WHITE, d, s, shininess, r);
+            assert_eq!(material.is_ok(), ok, "{d} {s} {shininess} {r}");
+            let size = common::fx_any(src);
+            let checked = Material::matte(Rgb::BLACK).with_checker(size, Rgb::WHITE);
+            assert_eq!(
+                checked.is_ok(),
+                size > Fx::ZERO && size <= LIMIT,
+                "checker {size}"
+            );
+            assert_eq!(Material::from(Rgb::WHITE), Material::matte(Rgb::WHITE));
+
+            // [ASSERT: Err for invalid input] Scene::new: ambient within 0..=1; capacities.
+            let ambient = common::fx_any(src);
+            let light = Light::new_unchecked(Vec3::ZERO, Fx::ONE);
+            let scene = Scene::<2, 2>::new(light, ambient, Rgb::BLACK);
+            assert_eq!(
+                scene.is_ok(),
+                ambient >= Fx::ZERO && ambient <= Fx::ONE,
+                "{ambient}"
+            );
+            if let Ok(mut scene) = scene {
+                assert_eq!(scene.ambient(), ambient);
+                assert!(scene.add_light(light).is_ok());
+                assert_eq!(
+                    scene.add_light(light),
+                    Err(Error::CapacityExceeded { capacity: 2 })
+                );
+                let ball = Sphere::new_unchecked(Vec3::ZERO, Fx::ONE);
+                assert_eq!(scene.add_sphere(ball, Rgb::WHITE), Ok(0));
+                assert_eq!(
+                    scene.add_plane(Plane::new_unchecked(Vec3::ZERO, Vec3::Y), Rgb::WHITE),
+                    Ok(1)
+                );
+                assert!(scene.add_sphere(ball, Rgb::WHITE).is_err());
+                assert!(scene.shadows());
+                let _ = format!("{}", Error::CapacityExceeded { capacity: 2 });
+            }
+
+            // [ASSERT: Err for invalid input; accepted cameras are usable] Cameras with every
+            // kind of hostile value.
+            let spec = common::camera_spec(src, 2);
+            common::check_camera_spec(&spec, true);
+        },
+    );
+}
+
+// ---------------------------------------------------------------------------------------------
+// Hand-built values
+// ---------------------------------------------------------------------------------------------
+
+/// `Ray`, `Hit`, `Material`, `Light`, `Checker` and `Background` have public fields: values
+/// built by hand skip every check. No public function may panic or wrap on them.
+///
+/// In four parts, each its own test, so that a panic in one does not hide the others: rays
+/// against shapes, scenes of hand-built lights and materials along the camera's rays, hand-built
+/// rays into a scene, hand-built hits shaded.
+fn hand_built(test: &str, part: u8) {
+    run(
+        test,
+        1500,
+        |src| {
+            (
+                common::vec_any(src),
+                common::vec_any(src),
+                common::vec_any(src),
+                common::fx_any(src),
+            )
+        },
+        |src| {
+            // [ASSERT: no panic] Any ray against any valid shape.
+            let ray = Ray {
+                origin: common::vec_any(src),
+                dir: common::vec_any(src),
+            };
+            let sphere = Sphere::new_unchecked(
+                common::vec_within(src, 1024.0),
+                Fx::from_num(src.uniform(1024.0).abs()).max(Fx::from_bits(1)),
+            );
+            let plane = Plane::new(common::vec_within(src, 1024.0), Vec3::Y)
+                .expect("valid")
+                .bounded([-LIMIT, -LIMIT], [LIMIT, LIMIT])
+                .expect("valid");
+            for shape in [Shape::Sphere(sphere), Shape::Plane(plane)]
+                .iter()
+                .filter(|_| part == 0)
+            {
+                let _ = shape.intersect(&ray);
+                if let Some(t) = shape.hit_distance(&ray) {
+                    assert!(t >= Fx::ZERO && t <= FAR, "hit at {t} for {ray:?}");
+                }
+                let _ = shape.hit_at(&ray, common::fx_any(src));
+            }
+            if part == 0 {
+                let _ = sphere.intersect(&ray);
+                let _ = sphere.normal_at(ray.origin);
+                let _ = plane.intersect(&ray);
+                let _ = plane.hit_at(&ray, common::fx_any(src));
+                let _ = plane.distance(ray.dir);
+                let _ = ray.at(common::fx_any(src));
+                return;
+            }
+
+            // [ASSERT: no panic] A scene of hand-built lights, materials and checkers, shot and
+            // shaded along hand-built rays and hits.
+            let light = Light {
+                position: common::vec_any(src),
+                intensity: common::fx_any(src),
+            };
+            let material = Material {
+                colour: Rgb::new(src.bits() as u8, 255, 0),
+                diffuse: common::fx_any(src),
+                specular: common::fx_any(src),
+                shininess: src.bits() as u16,
+                reflect: common::fx_any(src),
+                checker: src.one_in(2).then(|| Checker {
+                    size: common::fx_any(src),
+                    other: Rgb::WHITE,
+                }),
+            };
+            let background = Background {
+                top: Rgb::new(src.bits() as u8, 0, 255),
+                bottom: Rgb::new(0, src.bits() as u8, 255),
+            };
+            let mut scene = Scene::<4>::new(
+                Light::new_unchecked(Vec3::ZERO, Fx::ONE),
+                Fx::ONE,
+                background,
+            )
+            .expect("valid");
+            let _ = scene.add_light(light);
+            // The `*_unchecked` constructors promise nothing outside their contract (a debug
+            // build may assert it), so they get values inside it; the literals above get any.
+            let _ = scene.add_light(Light::new_unchecked(
+                common::vec_within(src, 1024.0),
+                Fx::ONE,
+            ));
+            let _ = scene.add_sphere(sphere, material);
+            let _ = scene.add_plane(plane, material);
+            let _ = scene.add(Object {
+                shape: Shape::Plane(Plane::new_unchecked(
+                    common::vec_within(src, 1024.0),
+                    Vec3::Z,
+                )),
+                material,
+            });
+            scene.set_depth(src.pick(&[0, 1, 16, 255]));
+            // Hand-built cameras do not exist (private fields), but hostile rows do.
+            let camera = demo::camera(8, 6).expect("valid");
+            if part == 1 {
+                for row in 0..6 {
+                    for col in 0..8 {
+                        let _ = scene.trace(&camera.ray(row, col));
+                    }
+                }
+                let _ = scene.seen_from_row(&camera, src.bits() as u16);
+                let _ = scene.shoot_among(&camera.ray(src.bits() as u16, src.bits() as u16), !0);
+                for object in scene.objects() {
+                    let _ = object.colour_at(common::vec_any(src));
+                }
+                let checker = Checker {
+                    size: common::fx_any(src),
+                    other: Rgb::BLACK,
+                };
+                let _ = checker.colour_at(Rgb::WHITE, [common::fx_any(src), common::fx_any(src)]);
+                return;
+            }
+            if part == 2 {
+                let _ = scene.shoot(&ray);
+                let _ = scene.shoot_among(&ray, src.bits());
+                let _ = scene.trace(&ray);
+                let _ = scene.shade(&ray, None);
+                return;
+            }
+            let hit = Hit {
+                t: common::fx_any(src),
+                point: common::vec_any(src),
+                normal: common::vec_any(src),
+                object: src.pick(&[0, 1, 2, 3, 4, usize::MAX]),
+            };
+            let _ = scene.shade(&ray, Some(&hit));
+            let valid = camera.ray(3, 4);
+            let _ = scene.shade(&valid, Some(&hit));
+        },
+    );
+}
+
+#[test]
+fn hand_built_rays_against_shapes() {
+    hand_built("hand_built_rays_against_shapes", 0);
+}
+
+#[test]
+fn hand_built_lights_materials_and_checkers() {
+    hand_built("hand_built_lights_materials_and_checkers", 1);
+}
+
+#[test]
+fn hand_built_rays_into_scenes() {
+    hand_built("hand_built_rays_into_scenes", 2);
+}
+
+#[test]
+fn hand_built_hits_shaded() {
+    hand_built("hand_built_hits_shaded", 3);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Numbers
+// ---------------------------------------------------------------------------------------------
+
+/// The exact value of a Q32.32 sum, rounded half up to Q16.16 and saturated, as i64 raw.
+fn narrow_exact(wide: i128) -> i64 {
+    let rounded = (wide + (1 << 15)) >> 16;
+    rounded.clamp(i32::MIN as i128, i32::MAX as i128) as i64
+}
+
+/// Vector arithmetic on any Q16.16 values: saturating where documented, exact products
+/// rounded once, integer square roots exact.
+#[test]
+fn numbers_saturate_instead_of_wrapping() {
+    run(
+        "numbers_saturate_instead_of_wrapping",
+        20000,
+        |src| (common::vec_any(src), common::vec_any(src)),
+        |src| {
+            let (a, b) = (common::vec_any(src), common::vec_any(src));
+            let raw = |v: Fx| v.to_bits() as i128;
+            let dot_exact = raw(a.x) * raw(b.x) + raw(a.y) * raw(b.y) + raw(a.z) * raw(b.z);
+
+            // [ASSERT: dot_wide is exact where it fits, saturated where not]
+            let wide = a.dot_wide(b);
+            let clamped = dot_exact.clamp(i64::MIN as i128, i64::MAX as i128);
+            assert_eq!(wide as i128, clamped, "dot_wide of {a:?}, {b:?}");
+            // [ASSERT: dot is the exact product rounded once, saturating]
+            let dot = a.dot(b).to_bits() as i64;
+            let expect = narrow_exact(clamped);
+            assert!(
+                (dot - expect).abs() <= 1,
+                "dot of {a:?}, {b:?}: {dot} where the saturated exact value is {expect}"
+            );
+            // [ASSERT: cross products are formed at 64 bits and rounded once (saturating)]
+            let c = a.cross(b);
+            let exact = [
+                raw(a.y) * raw(b.z) - raw(a.z) * raw(b.y),
+                raw(a.z) * raw(b.x) - raw(a.x) * raw(b.z),
+                raw(a.x) * raw(b.y) - raw(a.y) * raw(b.x),
+            ];
+            for (got, e) in [c.x, c.y, c.z].into_iter().zip(exact) {
+                assert!(
+                    (got.to_bits() as i64 - narrow_exact(e)).abs() <= 1,
+                    "cross of {a:?}, {b:?}: {got} against {}",
+                    narrow_exact(e)
+                );
+            }
+            // [ASSERT: lengths exact]
+            let square = (raw(a.x) * raw(a.x) + raw(a.y) * raw(a.y) + raw(a.z) * raw(a.z)) as u128;
+            assert_eq!(a.length_squared_wide() as u128, square, "{a:?}");
+            let root = fixray::isqrt(a.length_squared_wide()) as u128;
+            assert!(
+                root * root <= square && (root + 1) * (root + 1) > square,
+                "isqrt"
+            );
+            let length = a.length().to_bits() as i64;
+            assert_eq!(length, root.min(i32::MAX as u128) as i64, "length of {a:?}");
+            // [ASSERT: normalisation within one unit a component]
+            match a.try_normalize() {
+                None => assert_eq!(a, Vec3::ZERO),
+                Some(u) => {
+                    let exact = a.to_f64().map(|c| c / (square as f64).sqrt() * 65536.0);
+                    for (got, e) in [u.x, u.y, u.z].into_iter().zip(exact) {
+                        assert!(
+                            (got.to_bits() as f64 - e * 65536.0).abs() <= 1.0,
+                            "normalising {a:?}: {u:?}"
+                        );
+                    }
+                }
+            }
+            assert_eq!(
+                a.normalize_or_zero(),
+                a.try_normalize().unwrap_or(Vec3::ZERO)
+            );
+            // [ASSERT: sums, differences, negation and scaling saturate]
+            let sat = |v: i128| v.clamp(i32::MIN as i128, i32::MAX as i128) as i32;
+            assert_eq!((a + b).x.to_bits(), sat(raw(a.x) + raw(b.x)));
+            assert_eq!((a - b).y.to_bits(), sat(raw(a.y) - raw(b.y)));
+            let _ = -a;
+            let k = common::fx_any(src);
+            let scaled = a.scale(k).z.to_bits() as i64;
+            assert!(
+                (scaled - narrow_exact(raw(a.z) * raw(k))).abs() <= 1,
+                "scale"
+            );
+            let product = fixray::mul(a.x, k).to_bits() as i64;
+            assert!(
+                (product - narrow_exact(raw(a.x) * raw(k))).abs() <= 1,
+                "mul"
+            );
+            let in_limit = [a.x, a.y, a.z].iter().all(|&c| c >= -LIMIT && c <= LIMIT);
+            assert_eq!(a.check_range("a").is_ok(), in_limit);
+            let _ = a.to_f64();
+            let n = src.bits() >> src.below(64);
+            let r = fixray::isqrt(n) as u128;
+            assert!(
+                r * r <= n as u128 && (r + 1) * (r + 1) > n as u128,
+                "isqrt({n})"
+            );
+            let _ = Vec3::from_ints(src.bits() as i16, i16::MIN, i16::MAX);
+
+            // [ASSERT: dithering stays within its levels for any luma and point]
+            let at = Point::new(src.bits() as i32, src.bits() as i32);
+            let luma = src.bits() as u32 >> src.below(32);
+            let max = src.bits() as u8;
+            assert!(draw::dither(luma, max, at) <= max, "dither");
+            assert!(draw::bayer_index(at) < 64);
+            assert!(draw::luma(Rgb::WHITE) <= draw::LUMA_MAX);
+            assert_eq!(
+                draw::BAYER_8X8
+                    .as_flattened()
+                    .iter()
+                    .map(|&v| v as u32)
+                    .sum::<u32>(),
+                2016
+            );
+            let colour = Rgb::new(src.bits() as u8, src.bits() as u8, src.bits() as u8);
+            let _ = <embedded_graphics::pixelcolor::Gray4 as FromRgb>::from_rgb(colour, at);
+            let _ = <embedded_graphics::pixelcolor::Gray2 as FromRgb>::from_rgb(colour, at);
+            let _ = <embedded_graphics::pixelcolor::Rgb565 as FromRgb>::from_rgb(colour, at);
+        },
+    );
+}
+
+/// A camera is the one thing a user cannot build by hand; `Camera` is `Copy` and comparable,
+/// and its accessors give back what it was built with.
+#[test]
+fn camera_accessors() {
+    let camera = Camera::look_at(
+        [1.0, 2.0, 3.0],
+        [1.0, 2.0, -3.0],
+        [0.0, 1.0, 0.0],
+        60.0,
+        7,
+        5,
+    )
+    .expect("valid");
+    assert_eq!((camera.cols(), camera.rows()), (7, 5));
+    assert_eq!(camera.eye(), Vec3::from_ints(1, 2, 3));
+    let too_wide = fixray::MAX_PIXELS + 1;
+    assert!(
+        Camera::look_at(
+            [0.0; 3],
+            [0.0, 0.0, -1.0],
+            [0.0, 1.0, 0.0],
+            60.0,
+            too_wide,
+            5
+        )
+        .is_err()
+    );
+}
