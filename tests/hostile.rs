@@ -227,6 +227,15 @@ fn demo_scenes_through_hostile_cameras() {
     );
 }
 
+/// Whether a screen of `cols × rows` square pixels with the demo's 60° of height breaks
+/// `Camera`'s documented ray budget, `F² + R² ≤ 16 384·F` (view distance `F`, half-diagonal
+/// `R`, in pixels), by more than rounding could decide.
+fn past_the_ray_budget(cols: u16, rows: u16) -> bool {
+    let f = rows as f64 * (demo::SCREEN_DISTANCE / demo::SCREEN_HEIGHT) as f64;
+    let r2 = (cols as f64 * cols as f64 + rows as f64 * rows as f64) / 4.0;
+    f * f + r2 > 16_384.0 * f * 1.001
+}
+
 /// The demo module's own cameras at hostile sizes: refused exactly where the screen has no
 /// pixels or more than 4096 a side.
 #[test]
@@ -246,11 +255,26 @@ fn demo_cameras_at_hostile_sizes() {
                     Err(e) if 2 * cols as u32 > 1024 * rows as u32 => {
                         // The demo's screen is 2 units high and its pixels square: wider than
                         // 512 pixels per row it is more than 1024 units wide, out of range.
-                        assert!(matches!(e, Error::OutOfRange { .. }), "{e}");
+                        assert!(
+                            matches!(
+                                e,
+                                Error::OutOfRange { .. } | Error::FieldOfViewTooWide { .. }
+                            ),
+                            "{e}"
+                        );
+                    }
+                    Err(e) if past_the_ray_budget(cols, rows) => {
+                        // [ASSERT: Err for invalid input] A screen so wide for its 60° of
+                        // height that its corners leave Camera's ray budget.
+                        assert!(matches!(e, Error::FieldOfViewTooWide { .. }), "{e}");
                     }
                     Err(e) => panic!("demo camera {cols}×{rows} refused: {e}"),
                     Ok(c) => {
                         assert!(!bad, "demo camera {cols}×{rows} must be refused");
+                        assert!(
+                            !past_the_ray_budget(cols, rows),
+                            "demo camera {cols}×{rows} is past the ray budget"
+                        );
                         assert_eq!((c.cols(), c.rows()), (cols, rows));
                         let _ = c.ray(rows - 1, cols - 1);
                     }

@@ -803,12 +803,10 @@ pub fn check_rays_past_the_screen(spec: &CameraSpec, camera: &Camera) {
     }
     check_rays(spec, camera, &pixels);
     for row in [rows, u16::MAX] {
-        for (col, ray) in (0..).zip(camera.row_rays(row)) {
-            if col % 97 == 0 || col + 1 == cols {
-                assert_eq!(ray, camera.ray(row, col), "row_rays({row}) column {col}");
-            }
-        }
-        assert_eq!(camera.row_rays(row).count(), cols as usize);
+        assert!(
+            camera.row_rays(row).is_err(),
+            "row_rays({row}) past the screen"
+        );
     }
 }
 
@@ -874,13 +872,14 @@ pub fn check_rays(spec: &CameraSpec, camera: &Camera, pixels: &[(u16, u16)]) {
     }
     // [ASSERT: RowRays is Camera::ray] for the last row of the screen.
     let row = rows - 1;
-    for (col, ray) in (0..).zip(camera.row_rays(row)) {
+    let rays = camera.row_rays(row).expect("the last row is on the screen");
+    for (col, ray) in (0..).zip(rays) {
         if col % 97 == 0 || col + 1 == cols {
             assert_eq!(ray, camera.ray(row, col), "row_rays({row}) column {col}");
         }
     }
     assert_eq!(
-        camera.row_rays(row).len(),
+        camera.row_rays(row).expect("on the screen").len(),
         cols as usize,
         "a ray per column"
     );
@@ -1031,12 +1030,12 @@ pub fn check_row<const N: usize>(scene: &Scene<N>, camera: &Camera, row: u16) ->
         "long buffer"
     );
     let mut hits = Vec::with_capacity(cols);
-    fixray::shoot_row(scene, camera, row, |col, ray, hit| {
+    let shot_row = fixray::shoot_row(scene, camera, row, |col, ray, hit| {
         hits.push((col, *ray, hit))
     });
     let mut skipped = Vec::new();
     let mut seen = Vec::new();
-    fixray::shoot_row_skipping(
+    let skipped_row = fixray::shoot_row_skipping(
         scene,
         camera,
         row,
@@ -1052,15 +1051,21 @@ pub fn check_row<const N: usize>(scene: &Scene<N>, camera: &Camera, row: u16) ->
             fixray::render_row_supersampled(scene, camera, row, 2, &mut out).is_err(),
             "render_row_supersampled({row}) past the screen must be refused"
         );
-        // shoot_row takes the row unchecked: whatever it hands over must still be the
-        // camera's own rays for that row, shot exactly (and those rays are checked not to wrap
-        // by check_camera).
-        for (col, ray, hit) in hits.iter().chain(&seen) {
-            assert_eq!(*ray, camera.ray(row, *col), "shoot_row({row}) column {col}");
-            assert_eq!(*hit, scene.shoot(ray), "shoot_row({row}) column {col}");
-        }
+        // Every row entry point refuses the row the same way, and hands nothing over.
+        let refused = fixray::Error::RowOutOfRange {
+            row,
+            rows: camera.rows(),
+        };
+        assert_eq!(rendered, Err(refused), "render_row({row})");
+        assert_eq!(shot_row, Err(refused), "shoot_row({row})");
+        assert_eq!(skipped_row, Err(refused), "shoot_row_skipping({row})");
+        assert!(hits.is_empty() && seen.is_empty() && skipped.is_empty());
+        assert!(camera.row_rays(row).is_err(), "row_rays({row})");
         return Vec::new();
     }
+    shot_row.unwrap_or_else(|e| panic!("shoot_row({row}) refused a row on the screen: {e}"));
+    skipped_row
+        .unwrap_or_else(|e| panic!("shoot_row_skipping({row}) refused a row on the screen: {e}"));
     rendered.unwrap_or_else(|e| panic!("render_row({row}) refused a row on the screen: {e}"));
     assert_eq!(hits.len(), cols, "shoot_row hands over every column");
     for (col, (c, ray, hit)) in hits.iter().enumerate() {
