@@ -22,3 +22,16 @@ pub struct Hit {
     /// leave it 0 and [`Scene::shoot`](crate::Scene::shoot) fills it in.
     pub object: usize,
 }
+
+impl Hit {
+    /// This hit with each component of its normal clamped to ±2 (see `Ray::bounded`): what
+    /// [`Scene::shade`](crate::Scene::shade) works on when a caller built the hit by hand.
+    #[inline]
+    #[must_use]
+    pub(crate) const fn bounded(&self) -> Hit {
+        Hit {
+            normal: self.normal.clamp_raw(crate::ray::BOUND),
+            ..*self
+        }
+    }
+}

@@ -145,11 +145,11 @@ fn add(sum: &mut Linear, weight: Fx, c: Linear) {
 /// The normal turned to face against the ray, so that a sphere seen from inside and a plane
 /// seen from behind are lit on the side the ray is on.
 ///
-/// [`Hit`] and [`Ray`] have public fields, so neither vector need be a unit one here: the
-/// sign comes from [`Vec3::dot_wide`], exact for every pair of vectors, which costs one check
-/// of the sum's top bits more than a plain sum.
+/// Both vectors are bounded (each component within ±2): the render path's own are unit
+/// vectors, and [`Scene::shade`] bounds a caller's hand-built ray and hit (`Ray::bounded`), so
+/// the exact sum cannot overflow.
 fn facing(normal: Vec3, dir: Vec3) -> Vec3 {
-    if normal.dot_wide(dir) > 0 {
+    if normal.dot_wide_exact(dir) > 0 {
         -normal
     } else {
         normal

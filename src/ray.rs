@@ -67,7 +67,26 @@ impl Ray {
     pub(crate) fn at_hit(&self, t: Fx) -> Vec3 {
         self.origin + self.dir.scale_unit(t)
     }
+
+    /// This ray with each component of its direction clamped to ±2.
+    ///
+    /// The render path's products take one side to be a unit vector, as every ray fixray makes
+    /// has. A public function that takes a caller's ray, whose fields are public, works on it
+    /// bounded so: a unit direction is unchanged, bit for bit, and a hand-built longer one
+    /// keeps every product inside 64 bits (its results are then not the documented ones, but
+    /// nothing overflows).
+    #[inline]
+    #[must_use]
+    pub(crate) const fn bounded(&self) -> Ray {
+        Ray {
+            origin: self.origin,
+            dir: self.dir.clamp_raw(BOUND),
+        }
+    }
 }
+
+/// ±2 in raw units: a unit vector's components, rounded, are within ±(1 + 2⁻¹⁶).
+pub(crate) const BOUND: i32 = 1 << 17;
 
 /// Whether `dir` has length 1 within the rounding of [`Vec3::try_normalize`]: each component
 /// within a unit of 2⁻¹⁶ of exact puts the squared length within 2⁻¹⁴ of 1; 2⁻¹² leaves room.

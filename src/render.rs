@@ -41,7 +41,7 @@ pub fn render_row<const N: usize, const L: usize>(
         |first, end, cast| match cast {
             Some((ray, hit)) => {
                 if let Some(pixel) = out.get_mut(first as usize) {
-                    *pixel = scene.shade(ray, hit.as_ref());
+                    *pixel = scene.shade_bounded(ray, hit);
                 }
             }
             None => {

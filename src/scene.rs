@@ -35,9 +35,14 @@ impl Shape {
     /// The distance `t` to the first hit alone.
     #[must_use]
     pub fn hit_distance(&self, ray: &Ray) -> Option<Fx> {
+        self.hit_distance_bounded(&ray.bounded())
+    }
+
+    /// [`Shape::hit_distance`] for a bounded ray (see `Ray::bounded`): the render path's form.
+    pub(crate) fn hit_distance_bounded(&self, ray: &Ray) -> Option<Fx> {
         match self {
             Shape::Plane(p) => p.hit_distance(ray),
-            Shape::Sphere(s) => s.hit_distance(ray),
+            Shape::Sphere(s) => s.hit_distance_bounded(ray),
         }
     }
 
@@ -236,7 +241,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// first wins.
     #[must_use]
     pub fn shoot(&self, ray: &Ray) -> Option<Hit> {
-        self.shoot_from(ray, None)
+        self.shoot_from(&ray.bounded(), None)
     }
 
     /// [`Scene::shoot`], ignoring the object the ray leaves from.
@@ -253,7 +258,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
             if index == leaving {
                 None
             } else {
-                shape.hit_distance(ray)
+                shape.hit_distance_bounded(ray)
             }
         })
     }
@@ -302,7 +307,8 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// only for the nearest.
     #[must_use]
     pub fn shoot_among(&self, ray: &Ray, among: u64) -> Option<Hit> {
-        self.nearest_among(ray, among, |_, shape| shape.hit_distance(ray))
+        let ray = &ray.bounded();
+        self.nearest_among(ray, among, |_, shape| shape.hit_distance_bounded(ray))
     }
 
     /// [`Scene::shoot_among`] for a ray from `eye.origin()`, with what all such rays share
@@ -310,7 +316,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     pub(crate) fn shoot_from_eye(&self, ray: &Ray, among: u64, eye: &Eye<N>) -> Option<Hit> {
         self.nearest_among(ray, among, |index, shape| match shape {
             Shape::Plane(plane) => plane.hit_distance_from(ray, eye.numerator(index)),
-            Shape::Sphere(sphere) => sphere.hit_distance(ray),
+            Shape::Sphere(sphere) => sphere.hit_distance_bounded(ray),
         })
     }
 
@@ -360,7 +366,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         light: usize,
     ) -> bool {
         let blocks = |object: &Object| {
-            object.shape.hit_distance(ray).is_some_and(|t| {
+            object.shape.hit_distance_bounded(ray).is_some_and(|t| {
                 let t = t.to_bits() as u32;
                 fx::wide_mul_u32(t, t) < distance_squared
             })
@@ -385,7 +391,13 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// object index past the last shades as a miss.
     #[must_use]
     pub fn shade(&self, ray: &Ray, hit: Option<&Hit>) -> Rgb {
-        crate::shading::to_rgb(self.radiance(ray, hit.copied()))
+        self.shade_bounded(&ray.bounded(), hit.map(Hit::bounded))
+    }
+
+    /// [`Scene::shade`] for a bounded ray and hit (see `Ray::bounded`), as the render path's
+    /// own are.
+    pub(crate) fn shade_bounded(&self, ray: &Ray, hit: Option<Hit>) -> Rgb {
+        crate::shading::to_rgb(self.radiance(ray, hit))
     }
 
     /// `shade(shoot(ray))`: the colour of the pixel this ray passes through.

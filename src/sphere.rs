@@ -137,6 +137,12 @@ impl Sphere {
     /// scene needs to find the nearest object and to test shadow rays.
     #[must_use]
     pub fn hit_distance(&self, ray: &Ray) -> Option<Fx> {
+        self.hit_distance_bounded(&ray.bounded())
+    }
+
+    /// [`Sphere::hit_distance`] for a ray whose direction is bounded (see `Ray::bounded`), as
+    /// every ray fixray makes itself is: the render path's form.
+    pub(crate) fn hit_distance_bounded(&self, ray: &Ray) -> Option<Fx> {
         let to_centre = self.centre - ray.origin;
         let t_close = ray.dir.dot_exact(to_centre);
         if t_close < -self.radius {
