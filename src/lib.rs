@@ -35,6 +35,13 @@
 //! non-zero and the quotient known to fit. Out-of-range input is an [`Error`], not a wrapped
 //! picture.
 //!
+//! Cameras keep `F² + R² ≤ 16 384·F` (view distance `F`, half-diagonal `R`, in pixels), so
+//! ray directions stay within 16 384 pixels and within half a pixel of exact. [`Ray`], [`Hit`],
+//! [`Material`] and [`Light`] have public fields, so a caller can build one outside these
+//! checks: the public functions that take them bound each direction and normal component to
+//! ±2 and saturate weights, which keeps every product in range (the picture is then not the
+//! documented one, but nothing panics or wraps).
+//!
 //! # Modules
 //! - numbers: [`Fx`], [`mul`], [`isqrt`], [`Vec3`]
 //! - geometry: [`Ray`], [`Plane`], [`Sphere`], [`Hit`]
