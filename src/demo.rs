@@ -7,17 +7,17 @@
 //!   and a checkerboard floor — the geometry of ssloy's tinyraytracer — seen by the look-at
 //!   camera ([`classic_camera`]).
 
-use crate::background::Background;
-use crate::camera::Camera;
-use crate::color::Rgb;
 use crate::error::Error;
-use crate::fx::Fx;
-use crate::light::Light;
-use crate::material::Material;
-use crate::plane::Plane;
+use crate::geometry::plane::Plane;
+use crate::geometry::sphere::Sphere;
+use crate::numbers::fx::Fx;
+use crate::numbers::vec3::Vec3;
+use crate::render::camera::Camera;
 use crate::scene::Scene;
-use crate::sphere::Sphere;
-use crate::vec3::Vec3;
+use crate::scene::background::Background;
+use crate::scene::colour::Rgb;
+use crate::scene::light::Light;
+use crate::scene::material::Material;
 
 /// Sky blue, where rays miss.
 pub const BACKGROUND: Rgb = Rgb::new(51, 178, 204);
@@ -112,7 +112,7 @@ pub fn classic() -> Scene<8> {
     let rubber = material(Rgb::new(77, 26, 26), 0.9, 0.1, 10, 0.0);
     let mirror = material(Rgb::WHITE, 0.0, 10.0, 1425, 0.8);
     let floor_material = Material {
-        checker: Some(crate::material::Checker {
+        checker: Some(crate::scene::material::Checker {
             size: fx(2.0),
             other: Rgb::new(77, 51, 26),
         }),

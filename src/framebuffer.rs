@@ -1,6 +1,6 @@
 //! [`Framebuffer`]: a whole frame of [`Rgb`] pixels in fixed-size storage.
 
-use crate::color::Rgb;
+use crate::scene::colour::Rgb;
 
 /// `W × H` pixels, row-major, with the storage inside the value.
 ///

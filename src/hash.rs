@@ -1,6 +1,6 @@
 //! [`FrameHash`]: a digest of a frame's bytes, the same on the host and on every chip.
 
-use crate::color::Rgb;
+use crate::scene::colour::Rgb;
 
 /// FNV-1a (32-bit) over a frame's bytes, fed one row at a time.
 ///

@@ -60,57 +60,32 @@
 #![forbid(unsafe_code)]
 #![deny(missing_docs, rustdoc::broken_intra_doc_links)]
 
-mod background;
-mod camera;
-mod color;
-mod cone;
 pub mod demo;
-mod divide;
 pub mod draw;
 mod error;
 mod framebuffer;
-mod fx;
+mod geometry;
 mod hash;
-mod hit;
-mod isqrt;
-mod light;
-mod lighting;
-mod material;
-mod plane;
-mod ray;
+mod numbers;
 mod render;
-mod row_rays;
-mod rsqrt;
-mod runs;
 mod scene;
-mod shading;
-mod sphere;
-mod vec3;
 #[cfg(test)]
 mod xorshift;
 
 #[cfg(feature = "reference")]
 pub mod reference;
 
-pub use background::Background;
-pub use camera::{Camera, MAX_PIXELS};
-pub use color::Rgb;
 pub use draw::{DrawError, FromRgb, Viewport};
 pub use error::Error;
 pub use framebuffer::Framebuffer;
-pub use fx::{FAR, Fx, LIMIT, fx_from_f32, mul};
+pub use geometry::{Hit, Plane, Ray, Shape, Sphere};
 pub use hash::FrameHash;
-pub use hit::Hit;
-pub use isqrt::isqrt;
-pub use light::Light;
-pub use material::{Checker, Material};
-pub use plane::Plane;
-pub use ray::Ray;
-pub use render::{render, render_row, render_row_supersampled, shoot_row, shoot_row_skipping};
-pub use row_rays::RowRays;
-pub use scene::{Object, Scene, Shape};
-pub use sphere::Sphere;
-pub use vec3::Vec3;
+pub use numbers::{FAR, Fx, LIMIT, Vec3, fx_from_f32, isqrt, mul};
+pub use render::{
+    Camera, MAX_PIXELS, RowRays, render, render_row, render_row_supersampled, shoot_row,
+    shoot_row_skipping,
+};
+pub use scene::{Background, Checker, Light, Material, Object, Rgb, Scene};
 
 /// The README's Rust examples, compiled and run as doc tests.
 #[cfg(doctest)]

@@ -4,7 +4,7 @@ use embedded_graphics::pixelcolor::{BinaryColor, Gray2, Gray4, Gray8, Rgb565, Rg
 use embedded_graphics::prelude::{Point, RgbColor};
 
 use super::dither::{dither, luma};
-use crate::color::Rgb;
+use crate::scene::colour::Rgb;
 
 /// A display colour fixray can produce from a shaded [`Rgb`].
 ///

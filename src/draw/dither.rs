@@ -13,7 +13,7 @@
 
 use embedded_graphics::prelude::Point;
 
-use crate::color::Rgb;
+use crate::scene::colour::Rgb;
 
 /// Luma of white: `(77 + 150 + 29) · 255`, so [`luma`] runs from 0 to this.
 pub const LUMA_MAX: u32 = 256 * 255;

@@ -9,11 +9,11 @@ use embedded_graphics::primitives::Rectangle;
 
 use super::color::{FromRgb, converted};
 use super::error::DrawError;
-use crate::camera::Camera;
-use crate::color::Rgb;
 use crate::error::Error;
-use crate::render::render_row;
+use crate::render::camera::Camera;
+use crate::render::rows::render_row;
 use crate::scene::Scene;
+use crate::scene::colour::Rgb;
 
 /// A scene seen through a camera, placed on a rectangle of a display.
 ///

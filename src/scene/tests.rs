@@ -1,5 +1,5 @@
 use super::*;
-use crate::vec3::Vec3;
+use crate::numbers::vec3::Vec3;
 
 fn lit_from_above() -> Scene<4> {
     let light = Light::new(Vec3::from_ints(0, 100, 0), Fx::from_num(0.75)).unwrap();

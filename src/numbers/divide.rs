@@ -1,6 +1,6 @@
 //! Division by a reciprocal: the quotient of two 64-bit values without a 64-bit division.
 
-use crate::fx::{bit_length, top_word, wide_mul_u32};
+use crate::numbers::fx::{bit_length, top_word, wide_mul_u32};
 /// `1/δ` for `δ = (128 + i + ½)/256`, `i` in 0..128, in Q1.15: the seed of the Newton steps.
 const SEEDS: [u16; 128] = {
     let mut seeds = [0u16; 128];

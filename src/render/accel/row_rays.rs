@@ -1,9 +1,9 @@
 //! [`RowRays`]: the rays of a display row, in column order, for a few additions each before
 //! normalising; and [`RowSquares`], the squared lengths that make that possible.
 
-use crate::camera::Camera;
-use crate::ray::Ray;
-use crate::vec3::Vec3;
+use crate::geometry::ray::Ray;
+use crate::numbers::vec3::Vec3;
+use crate::render::camera::Camera;
 
 /// The rays through the pixels of one display row, left to right: [`Camera::row_rays`].
 ///
@@ -118,7 +118,7 @@ impl RowSquares {
     /// they are taken afresh; Cortex-M0 keeps the sums. Either way the value is the same.
     #[inline]
     pub(crate) fn now(&self, towards: Vec3) -> u64 {
-        if crate::fx::NO_LONG_MULTIPLY {
+        if crate::numbers::fx::NO_LONG_MULTIPLY {
             self.square
         } else {
             towards.length_squared_wide()

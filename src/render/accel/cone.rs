@@ -1,9 +1,9 @@
 //! [`ShadowCone`]: what a light sees of a sphere, to skip shadow tests that cannot hit.
 
-use crate::fx::Fx;
-use crate::isqrt::isqrt;
-use crate::scene::Shape;
-use crate::vec3::Vec3;
+use crate::geometry::shape::Shape;
+use crate::numbers::fx::Fx;
+use crate::numbers::isqrt::isqrt;
+use crate::numbers::vec3::Vec3;
 
 /// The cone from a light that holds a sphere, and the sphere's nearest distance from it.
 ///
@@ -97,7 +97,7 @@ impl ShadowCone {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::sphere::Sphere;
+    use crate::geometry::sphere::Sphere;
 
     #[test]
     fn the_cone_holds_the_sphere_and_little_else() {

@@ -3,11 +3,11 @@
 use core::cmp::Ordering;
 
 use crate::error::Error;
-use crate::fx::{self, FAR, FRAC, Fx};
-use crate::hit::Hit;
-use crate::isqrt::isqrt;
-use crate::ray::Ray;
-use crate::vec3::Vec3;
+use crate::geometry::hit::Hit;
+use crate::geometry::ray::Ray;
+use crate::numbers::fx::{self, FAR, FRAC, Fx};
+use crate::numbers::isqrt::isqrt;
+use crate::numbers::vec3::Vec3;
 
 /// A near crossing at least this far ahead (a quarter of a unit) proves the origin outside
 /// the sphere, so the exact classification of [`Sphere::crossing_near_origin`] is needed only

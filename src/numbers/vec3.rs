@@ -3,9 +3,9 @@
 use core::ops::{Add, Neg, Sub};
 
 use crate::error::Error;
-use crate::fx::{self, Fx};
-use crate::isqrt::isqrt;
-use crate::rsqrt::rsqrt;
+use crate::numbers::fx::{self, Fx};
+use crate::numbers::isqrt::isqrt;
+use crate::numbers::rsqrt::rsqrt;
 
 /// A point or a direction with three Q16.16 components.
 ///

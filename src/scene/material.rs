@@ -1,8 +1,8 @@
 //! [`Material`]: how a surface answers light, and [`Checker`], a two-colour pattern.
 
-use crate::color::Rgb;
 use crate::error::Error;
-use crate::fx::Fx;
+use crate::numbers::fx::Fx;
+use crate::scene::colour::Rgb;
 
 /// How a surface shades: Lambert diffuse, Blinn-Phong specular and mirror reflection.
 ///

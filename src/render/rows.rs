@@ -1,14 +1,14 @@
 //! The chapter's double loop: for each pixel, shoot a ray through its centre and shade it.
 
-use crate::camera::Camera;
-use crate::color::Rgb;
 use crate::error::Error;
 use crate::framebuffer::Framebuffer;
-use crate::hit::Hit;
-use crate::ray::Ray;
-use crate::row_rays::RowSquares;
-use crate::runs::Runs;
+use crate::geometry::hit::Hit;
+use crate::geometry::ray::Ray;
+use crate::render::accel::row_rays::RowSquares;
+use crate::render::accel::runs::Runs;
+use crate::render::camera::Camera;
 use crate::scene::Scene;
+use crate::scene::colour::Rgb;
 
 /// Renders display row `row` (0 at the top) into `out`, one colour per column.
 ///

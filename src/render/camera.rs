@@ -3,10 +3,10 @@
 use micromath::F32Ext;
 
 use crate::error::Error;
-use crate::fx::{self, FRAC, Fx};
-use crate::ray::Ray;
-use crate::row_rays::RowRays;
-use crate::vec3::Vec3;
+use crate::geometry::ray::Ray;
+use crate::numbers::fx::{self, FRAC, Fx};
+use crate::numbers::vec3::Vec3;
+use crate::render::accel::row_rays::RowRays;
 
 /// Largest screen size in pixels, per side.
 pub const MAX_PIXELS: u16 = 4096;
@@ -593,7 +593,7 @@ impl Camera {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::row_rays::RowSquares;
+    use crate::render::accel::row_rays::RowSquares;
 
     #[test]
     fn chapter_screen_pixel_centres() {

@@ -1,11 +1,11 @@
 //! [`Plane`] and ray–plane intersection (section 4.3, Eq. 4.2).
 
-use crate::divide::div_q16;
 use crate::error::Error;
-use crate::fx::{FAR, Fx};
-use crate::hit::Hit;
-use crate::ray::Ray;
-use crate::vec3::Vec3;
+use crate::geometry::hit::Hit;
+use crate::geometry::ray::Ray;
+use crate::numbers::divide::div_q16;
+use crate::numbers::fx::{FAR, Fx};
+use crate::numbers::vec3::Vec3;
 
 /// An infinite plane through a point `p0` with unit normal `n`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -55,7 +55,7 @@ impl Plane {
     /// ```
     pub fn bounded(self, min: [Fx; 2], max: [Fx; 2]) -> Result<Self, Error> {
         for c in min.iter().chain(&max) {
-            crate::fx::check_range(*c, "plane bounds")?;
+            crate::numbers::fx::check_range(*c, "plane bounds")?;
         }
         if min[0] >= max[0] || min[1] >= max[1] {
             return Err(Error::OutOfRange {
@@ -108,7 +108,7 @@ impl Plane {
             "Plane::new_unchecked: the point must lie within ±1024"
         );
         debug_assert!(
-            crate::ray::is_unit(normal),
+            crate::geometry::ray::is_unit(normal),
             "Plane::new_unchecked: the normal must be a unit vector"
         );
         // Clamped, a broken promise still keeps Eq. 4.2's products and the far-clip test

@@ -1,9 +1,9 @@
 //! [`Background`]: what a ray that escapes the scene sees.
 
-use crate::color::Rgb;
-use crate::fx::Fx;
-use crate::shading::{Linear, channel_to_linear};
-use crate::vec3::Vec3;
+use crate::numbers::fx::Fx;
+use crate::numbers::vec3::Vec3;
+use crate::scene::colour::Rgb;
+use crate::scene::linear::{Linear, channel_to_linear};
 
 /// A vertical gradient: `bottom` for rays looking straight down, `top` straight up, blended
 /// linearly in between by `(u_r.y + 1) / 2`. Equal ends give a plain colour.
@@ -46,7 +46,7 @@ impl Background {
         let s = (dir.y.clamp(-MOST, MOST) + Fx::ONE) >> 1;
         let mix = |b: u8, t: u8| {
             let (b, t) = (channel_to_linear(b), channel_to_linear(t));
-            b + crate::fx::mul(t - b, s)
+            b + crate::numbers::fx::mul(t - b, s)
         };
         [
             mix(self.bottom.r, self.top.r),

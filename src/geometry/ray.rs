@@ -1,8 +1,8 @@
 //! [`Ray`]: the chapter's ray `x(t) = p_r + t·u_r` (Eq. 4.1).
 
 use crate::error::Error;
-use crate::fx::Fx;
-use crate::vec3::Vec3;
+use crate::numbers::fx::Fx;
+use crate::numbers::vec3::Vec3;
 
 /// A ray: an origination point `p_r` and a unit direction `u_r`.
 ///

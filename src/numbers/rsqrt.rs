@@ -5,7 +5,7 @@
 //! [`rsqrt`] finds `1/√s` by table and Newton steps in 32-bit fixed point instead, and a
 //! vector is normalised with three multiplications.
 
-use crate::fx::{bit_length, top_word, wide_mul_u32};
+use crate::numbers::fx::{bit_length, top_word, wide_mul_u32};
 /// `1/√μ` for `μ = (64 + i + ½)/256`, `i` in 0..192, in Q2.14: the seed of the Newton steps.
 ///
 /// Built at compile time from an integer square root, so there is no float anywhere.

@@ -1,7 +1,7 @@
 //! [`Hit`]: where a ray met a surface.
 
-use crate::fx::Fx;
-use crate::vec3::Vec3;
+use crate::numbers::fx::Fx;
+use crate::numbers::vec3::Vec3;
 
 /// The first point where a ray meets a surface.
 ///
@@ -30,7 +30,7 @@ impl Hit {
     #[must_use]
     pub(crate) const fn bounded(&self) -> Hit {
         Hit {
-            normal: self.normal.clamp_raw(crate::ray::BOUND),
+            normal: self.normal.clamp_raw(crate::geometry::ray::BOUND),
             ..*self
         }
     }

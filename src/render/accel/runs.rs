@@ -1,9 +1,10 @@
 //! [`Runs`]: a display row cut into runs of columns, each with the set of objects its rays
 //! can meet.
 
-use crate::camera::Camera;
-use crate::scene::{Eye, Scene, Shape};
-use crate::vec3::Vec3;
+use crate::geometry::shape::Shape;
+use crate::numbers::vec3::Vec3;
+use crate::render::camera::Camera;
+use crate::scene::{Eye, Scene};
 
 /// The runs of one display row, left to right.
 ///

@@ -1,8 +1,8 @@
 //! [`Light`]: a point light.
 
 use crate::error::Error;
-use crate::fx::Fx;
-use crate::vec3::Vec3;
+use crate::numbers::fx::Fx;
+use crate::numbers::vec3::Vec3;
 
 /// A point light at `position` with an `intensity` between 0 and 4 (1 lights a white surface
 /// facing it fully; several lights add up).

@@ -1,12 +1,12 @@
 //! Shading a hit: lights, shadow rays, highlights and mirror bounces, without recursion.
 
-use crate::fx::{self, Fx};
-use crate::hit::Hit;
-use crate::light::Light;
-use crate::ray::Ray;
+use crate::geometry::hit::Hit;
+use crate::geometry::ray::Ray;
+use crate::numbers::fx::{self, Fx};
+use crate::numbers::vec3::Vec3;
+use crate::scene::light::Light;
+use crate::scene::linear::{Linear, channel_to_linear, powi};
 use crate::scene::{Object, Scene};
-use crate::shading::{Linear, channel_to_linear, powi};
-use crate::vec3::Vec3;
 
 impl<const N: usize, const L: usize> Scene<N, L> {
     /// The light arriving along `ray`, whose first hit is `hit`, in linear units.

@@ -1,7 +1,7 @@
 //! The arithmetic of shading: colours in linear Q16.16 units, and powers for highlights.
 
-use crate::color::Rgb;
-use crate::fx::Fx;
+use crate::numbers::fx::Fx;
+use crate::scene::colour::Rgb;
 
 /// A colour being summed up, one Q16.16 value a channel, 1.0 standing for 255.
 pub(crate) type Linear = [Fx; 3];

@@ -1,60 +1,28 @@
 //! [`Scene`]: planes and spheres, lights, and the chapter's `shoot` and `shade`.
 
+pub(crate) mod background;
+pub(crate) mod colour;
+pub(crate) mod light;
+pub(crate) mod linear;
+pub(crate) mod material;
+
+pub use background::Background;
+pub use colour::Rgb;
+pub use light::Light;
+pub use material::{Checker, Material};
+
 use heapless::Vec;
 
-use crate::background::Background;
-use crate::color::Rgb;
-use crate::cone::ShadowCone;
 use crate::error::Error;
-use crate::fx::{self, Fx};
-use crate::hit::Hit;
-use crate::light::{Light, unit_interval};
-use crate::material::Material;
-use crate::plane::Plane;
-use crate::ray::Ray;
-use crate::sphere::Sphere;
-use crate::vec3::Vec3;
-
-/// The geometry of an object.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Shape {
-    /// An infinite plane, or a rectangle of one.
-    Plane(Plane),
-    /// A sphere.
-    Sphere(Sphere),
-}
-
-impl Shape {
-    /// The first hit of `ray` on this shape, if any.
-    #[must_use]
-    pub fn intersect(&self, ray: &Ray) -> Option<Hit> {
-        let t = self.hit_distance(ray)?;
-        Some(self.hit_at(ray, t))
-    }
-
-    /// The distance `t` to the first hit alone.
-    #[must_use]
-    pub fn hit_distance(&self, ray: &Ray) -> Option<Fx> {
-        self.hit_distance_bounded(&ray.bounded())
-    }
-
-    /// [`Shape::hit_distance`] for a bounded ray (see `Ray::bounded`): the render path's form.
-    pub(crate) fn hit_distance_bounded(&self, ray: &Ray) -> Option<Fx> {
-        match self {
-            Shape::Plane(p) => p.hit_distance(ray),
-            Shape::Sphere(s) => s.hit_distance_bounded(ray),
-        }
-    }
-
-    /// The hit at distance `t` along `ray`.
-    #[must_use]
-    pub fn hit_at(&self, ray: &Ray, t: Fx) -> Hit {
-        match self {
-            Shape::Plane(p) => p.hit_at(ray, t),
-            Shape::Sphere(s) => s.hit_at(ray, t),
-        }
-    }
-}
+use crate::geometry::hit::Hit;
+use crate::geometry::plane::Plane;
+use crate::geometry::ray::Ray;
+use crate::geometry::shape::Shape;
+use crate::geometry::sphere::Sphere;
+use crate::numbers::fx::{self, Fx};
+use crate::numbers::vec3::Vec3;
+use crate::render::accel::cone::ShadowCone;
+use crate::scene::light::unit_interval;
 
 /// A shape and what it is made of.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -397,7 +365,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// [`Scene::shade`] for a bounded ray and hit (see `Ray::bounded`), as the render path's
     /// own are.
     pub(crate) fn shade_bounded(&self, ray: &Ray, hit: Option<Hit>) -> Rgb {
-        crate::shading::to_rgb(self.radiance(ray, hit))
+        crate::scene::linear::to_rgb(self.radiance(ray, hit))
     }
 
     /// `shade(shoot(ray))`: the colour of the pixel this ray passes through.

@@ -1,0 +1,10 @@
+//! The speed-ups of the render path, each bit-identical to the plain path it replaces:
+//!
+//! - `row_rays`: a row's rays by exact column steps, their squared lengths carried along;
+//! - `runs`: a row cut into runs of columns that can meet the same objects (culling by the
+//!   row's plane, each sphere's column span, and planes every ray of a run points away from);
+//! - `cone`: each light's cone around each sphere, to skip shadow tests that cannot block.
+
+pub(crate) mod cone;
+pub(crate) mod row_rays;
+pub(crate) mod runs;

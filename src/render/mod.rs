@@ -1,0 +1,16 @@
+//! Rendering: the [`Camera`] that makes a ray for each pixel, the chapter's shoot and shade
+//! (`shade.rs` lights a hit), the rows and frames that users call ([`render_row`] and the
+//! rest), and `accel`, the speed-ups of the row walk.
+//!
+//! Every acceleration in `accel` is bound by one contract: a row it renders is bit for bit the
+//! row of pixels each traced on its own with [`Scene::trace`](crate::Scene::trace) of
+//! [`Camera::ray`]. `tests/render_row.rs` is that contract's oracle.
+
+pub(crate) mod accel;
+pub(crate) mod camera;
+pub(crate) mod rows;
+pub(crate) mod shade;
+
+pub use accel::row_rays::RowRays;
+pub use camera::{Camera, MAX_PIXELS};
+pub use rows::{render, render_row, render_row_supersampled, shoot_row, shoot_row_skipping};
