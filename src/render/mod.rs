@@ -9,7 +9,7 @@
 pub(crate) mod accel;
 pub(crate) mod camera;
 pub(crate) mod rows;
-pub(crate) mod shade;
+pub(crate) mod trace;
 
 pub use accel::row_rays::RowRays;
 pub use camera::{Camera, MAX_PIXELS};

@@ -1,4 +1,5 @@
 use super::*;
+use crate::geometry::ray::Ray;
 use crate::numbers::vec3::Vec3;
 
 fn lit_from_above() -> Scene<4> {

@@ -6,5 +6,6 @@
 //! - `cone`: each light's cone around each sphere, to skip shadow tests that cannot block.
 
 pub(crate) mod cone;
+pub(crate) mod cull;
 pub(crate) mod row_rays;
 pub(crate) mod runs;

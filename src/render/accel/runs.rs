@@ -3,8 +3,9 @@
 
 use crate::geometry::shape::Shape;
 use crate::numbers::vec3::Vec3;
+use crate::render::accel::cull::Eye;
 use crate::render::camera::Camera;
-use crate::scene::{Eye, Scene};
+use crate::scene::Scene;
 
 /// The runs of one display row, left to right.
 ///

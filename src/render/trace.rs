@@ -1,4 +1,9 @@
-//! Shading a hit: lights, shadow rays, highlights and mirror bounces, without recursion.
+//! The chapter's shoot and shade: the nearest hit along a ray, and the light that reaches the
+//! eye from it — lights, shadow rays, highlights and mirror bounces, without recursion.
+//!
+//! This is the plain path, readable top to bottom: [`Scene::trace`] is `shade(shoot(ray))`
+//! for one ray. `render_row` finds the same pixels for a whole row for less (see `accel`),
+//! bit for bit.
 
 use crate::geometry::hit::Hit;
 use crate::geometry::ray::Ray;
@@ -6,9 +11,65 @@ use crate::numbers::fx::{self, Fx};
 use crate::numbers::vec3::Vec3;
 use crate::scene::light::Light;
 use crate::scene::linear::{Linear, channel_to_linear, powi};
-use crate::scene::{Object, Scene};
+use crate::scene::{Object, Rgb, Scene};
 
 impl<const N: usize, const L: usize> Scene<N, L> {
+    /// `shade(shoot(ray))`: the colour of the pixel this ray passes through.
+    #[must_use]
+    pub fn trace(&self, ray: &Ray) -> Rgb {
+        self.shade(ray, self.shoot(ray).as_ref())
+    }
+
+    /// Shoots `ray` into the scene and returns the nearest hit; on a tie the object added
+    /// first wins.
+    #[must_use]
+    pub fn shoot(&self, ray: &Ray) -> Option<Hit> {
+        self.shoot_from(&ray.bounded(), None)
+    }
+
+    /// [`Scene::shoot`], ignoring the object the ray leaves from.
+    ///
+    /// Spheres and planes are convex: a ray leaving one towards a light or along a mirror
+    /// direction cannot meet the same surface again, so skipping it replaces the usual small
+    /// offset along the normal. That is exact, where an offset in Q16.16 would have to be
+    /// larger than the hit point's rounding (which grows with distance) and would detach
+    /// shadows from the objects that cast them.
+    pub(crate) fn shoot_from(&self, ray: &Ray, leaving: Option<usize>) -> Option<Hit> {
+        // Hits lie within FAR, so any hit is nearer than MAX; on a tie the first object wins.
+        let (mut best, mut nearest) = (Fx::MAX, usize::MAX);
+        for (index, object) in self.objects().iter().enumerate() {
+            if Some(index) != leaving
+                && let Some(t) = object.shape.hit_distance_bounded(ray)
+                && t < best
+            {
+                (best, nearest) = (t, index);
+            }
+        }
+        // Distances first; the hit point and normal only for the nearest.
+        let hit = self.objects().get(nearest)?.shape.hit_at(ray, best);
+        Some(Hit {
+            object: nearest,
+            ..hit
+        })
+    }
+
+    /// The colour seen along `ray` when it has this first hit: the background for a miss,
+    /// otherwise the lit surface plus what its mirror shows (see [`Material`](crate::Material)).
+    ///
+    /// `hit` is meant to come from [`Scene::shoot`], but it may be built by hand: a normal
+    /// that is not a unit vector saturates the arithmetic instead of overflowing it, and an
+    /// object index past the last shades as a miss.
+    #[must_use]
+    pub fn shade(&self, ray: &Ray, hit: Option<&Hit>) -> Rgb {
+        self.shade_bounded(&ray.bounded(), hit.map(Hit::bounded))
+    }
+
+    /// [`Scene::shade`] for a bounded ray and hit (see `Ray::bounded`), as the render path's
+    /// own are.
+    pub(crate) fn shade_bounded(&self, ray: &Ray, hit: Option<Hit>) -> Rgb {
+        crate::scene::linear::to_rgb(self.radiance(ray, hit))
+    }
+
     /// The light arriving along `ray`, whose first hit is `hit`, in linear units.
     ///
     /// Mirrors are followed in a loop, not by recursion: each bounce adds its surface's light
@@ -128,6 +189,34 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         // A channel is at most 1: its product with k needs no saturation.
         let channel = |c: u8| fx::mul_fits(k, channel_to_linear(c)).saturating_add(highlight);
         [channel(colour.r), channel(colour.g), channel(colour.b)]
+    }
+
+    /// Whether anything but object `leaving` lies on `ray` closer than `√distance_squared`
+    /// (a Q32.32 value): a shadow ray towards light `light`, which stops at the first
+    /// occluder and skips the spheres outside its [`ShadowCone`].
+    pub(crate) fn occluded(
+        &self,
+        ray: &Ray,
+        distance_squared: u64,
+        leaving: usize,
+        light: usize,
+    ) -> bool {
+        let blocks = |object: &Object| {
+            object.shape.hit_distance_bounded(ray).is_some_and(|t| {
+                let t = t.to_bits() as u32;
+                fx::wide_mul_u32(t, t) < distance_squared
+            })
+        };
+        let Some(cones) = self.cones().get(light) else {
+            // Not one of the scene's lights: no cones to go by.
+            return (self.objects().iter().enumerate()).any(|(i, o)| i != leaving && blocks(o));
+        };
+        for (index, (object, cone)) in self.objects().iter().zip(cones).enumerate() {
+            if index != leaving && cone.may_block(ray.dir, distance_squared) && blocks(object) {
+                return true;
+            }
+        }
+        false
     }
 }
 
