@@ -42,15 +42,22 @@
 //! ±2 and saturate weights, which keeps every product in range (the picture is then not the
 //! documented one, but nothing panics or wraps).
 //!
-//! # Modules
-//! - numbers: [`Fx`], [`mul`], [`isqrt`], [`Vec3`]
-//! - geometry: [`Ray`], [`Plane`], [`Sphere`], [`Hit`]
-//! - viewing: [`Camera`], and [`RowRays`], a row of its rays for a few additions each
-//! - the world: [`Scene`], [`Object`], [`Shape`], [`Material`], [`Checker`], [`Light`],
-//!   [`Background`], [`Rgb`]
-//! - output: [`render`], [`render_row`], [`render_row_supersampled`], [`shoot_row`],
-//!   [`shoot_row_skipping`],
-//!   [`Framebuffer`], [`FrameHash`]
+//! # The pipeline, layer by layer
+//!
+//! The source folders are the layers, each using only the ones above it:
+//! - `numbers/`: [`Fx`] and its exact products ([`mul`]), integer square roots ([`isqrt`]),
+//!   reciprocals (a table-seeded reciprocal square root, and division by it), [`Vec3`].
+//! - `geometry/`: the chapter's [`Ray`] (Eq. 4.1), [`Plane`] (Eq. 4.2) and [`Sphere`]
+//!   (section 4.4), pure intersection functions returning a [`Hit`]; [`Shape`] is either.
+//! - `scene/`: the [`Scene`] that holds [`Object`]s (a shape and its [`Material`], perhaps a
+//!   [`Checker`]), [`Light`]s and a [`Background`], in [`Rgb`] colours.
+//! - `render/`: the [`Camera`] makes a ray through each pixel centre; `trace.rs` is the
+//!   chapter's shoot and shade, read top to bottom ([`Scene::trace`] = `shade(shoot(ray))`);
+//!   [`render_row`], [`render`], [`render_row_supersampled`], [`shoot_row`] and
+//!   [`shoot_row_skipping`] walk rows and frames into a [`Framebuffer`] or a row buffer
+//!   ([`FrameHash`] digests them); `accel/` holds every speed-up of that walk ([`RowRays`],
+//!   row culling, runs of columns, shadow cones), each bit-identical to tracing the row's
+//!   pixels one by one.
 //! - [`draw`]: onto any `embedded-graphics` display, streamed band by band ([`Viewport`]),
 //!   in [`FromRgb`] colours with Bayer dithering for grey and one-bit displays
 //! - [`demo`]: the scenes the examples, tests and firmware share (demo and classic)
