@@ -56,7 +56,7 @@
 //!   [`render_row`], [`render`], [`render_row_supersampled`], [`shoot_row`] and
 //!   [`shoot_row_skipping`] walk rows and frames into a [`Framebuffer`] or a row buffer
 //!   ([`FrameHash`] digests them); `accel/` holds every speed-up of that walk ([`RowRays`],
-//!   row culling, runs of columns, shadow cones), each bit-identical to tracing the row's
+//!   row culling, runs of columns; and the shadow cones the scene keeps), each bit-identical to tracing the row's
 //!   pixels one by one.
 //! - [`draw`]: onto any `embedded-graphics` display, streamed band by band ([`Viewport`]),
 //!   in [`FromRgb`] colours with Bayer dithering for grey and one-bit displays

@@ -2,6 +2,7 @@
 
 pub(crate) mod background;
 pub(crate) mod colour;
+pub(crate) mod cone;
 pub(crate) mod light;
 pub(crate) mod linear;
 pub(crate) mod material;
@@ -18,7 +19,7 @@ use crate::geometry::plane::Plane;
 use crate::geometry::shape::Shape;
 use crate::geometry::sphere::Sphere;
 use crate::numbers::fx::Fx;
-use crate::render::accel::cone::ShadowCone;
+use crate::scene::cone::ShadowCone;
 use crate::scene::light::unit_interval;
 
 /// A shape and what it is made of.

@@ -3,9 +3,10 @@
 //! - `row_rays`: a row's rays by exact column steps, their squared lengths carried along;
 //! - `runs`: a row cut into runs of columns that can meet the same objects (culling by the
 //!   row's plane, each sphere's column span, and planes every ray of a run points away from);
-//! - `cone`: each light's cone around each sphere, to skip shadow tests that cannot block.
+//!
+//! The shadow rays' speed-up, each light's cone around each sphere, is a cache the scene keeps
+//! up to date as objects and lights are added: `scene/cone.rs`.
 
-pub(crate) mod cone;
 pub(crate) mod cull;
 pub(crate) mod row_rays;
 pub(crate) mod runs;
