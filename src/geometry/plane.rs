@@ -3,8 +3,8 @@
 use crate::error::Error;
 use crate::geometry::hit::Hit;
 use crate::geometry::ray::Ray;
-use crate::numbers::divide::div_q16;
 use crate::numbers::fx::{FAR, Fx};
+use crate::numbers::reciprocal::div_q16;
 use crate::numbers::vec3::Vec3;
 
 /// An infinite plane through a point `p0` with unit normal `n`.

@@ -1,7 +1,7 @@
 //! The exact integer square root, kept in one place so that it can be swapped by measurement.
 
 use crate::numbers::fx::{top_word, wide_mul_u32};
-use crate::numbers::rsqrt::rsqrt;
+use crate::numbers::reciprocal::rsqrt;
 
 /// `floor(sqrt(x))` for every `u64`, exactly.
 ///

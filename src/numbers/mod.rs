@@ -3,10 +3,9 @@
 //!
 //! Everything above this layer computes with these and nothing else: no floats after set-up.
 
-pub(crate) mod divide;
 pub(crate) mod fx;
 pub(crate) mod isqrt;
-pub(crate) mod rsqrt;
+pub(crate) mod reciprocal;
 pub(crate) mod vec3;
 
 pub use fx::{FAR, Fx, LIMIT, fx_from_f32, mul};

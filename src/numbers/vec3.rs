@@ -5,7 +5,7 @@ use core::ops::{Add, Neg, Sub};
 use crate::error::Error;
 use crate::numbers::fx::{self, Fx};
 use crate::numbers::isqrt::isqrt;
-use crate::numbers::rsqrt::rsqrt;
+use crate::numbers::reciprocal::rsqrt;
 
 /// A point or a direction with three Q16.16 components.
 ///
