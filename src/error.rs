@@ -52,6 +52,27 @@ pub enum Error {
         /// degree (rounded down).
         max_millidegrees: u32,
     },
+    /// An object index past the last object of a scene.
+    NoSuchObject {
+        /// The index asked for.
+        index: usize,
+        /// How many objects the scene has.
+        count: usize,
+    },
+    /// A light index past the last light of a scene.
+    NoSuchLight {
+        /// The index asked for.
+        index: usize,
+        /// How many lights the scene has.
+        count: usize,
+    },
+    /// A column past the right edge of the camera's picture.
+    ColumnOutOfRange {
+        /// The column asked for.
+        col: u16,
+        /// The columns the camera has (valid columns are `0..cols`).
+        cols: u16,
+    },
     /// A display row past the bottom of the camera's picture.
     RowOutOfRange {
         /// The row asked for.
@@ -91,6 +112,15 @@ impl fmt::Display for Error {
                 max_millidegrees / 1000,
                 max_millidegrees % 1000
             ),
+            Error::NoSuchObject { index, count } => {
+                write!(f, "object {index} does not exist: the scene has {count}")
+            }
+            Error::NoSuchLight { index, count } => {
+                write!(f, "light {index} does not exist: the scene has {count}")
+            }
+            Error::ColumnOutOfRange { col, cols } => {
+                write!(f, "column {col} is outside the picture's {cols} columns")
+            }
             Error::RowOutOfRange { row, rows } => {
                 write!(f, "row {row} is outside the picture's {rows} rows")
             }

@@ -8,6 +8,7 @@
 
 pub(crate) mod accel;
 pub(crate) mod camera;
+pub(crate) mod pick;
 pub(crate) mod rows;
 pub(crate) mod trace;
 

@@ -151,6 +151,90 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         Ok(index)
     }
 
+    /// Replaces object `index` (its shape, its material or both), keeping its place: the
+    /// scene between two frames of an animation. Every light's shadow cone of it is worked out
+    /// again, so the next render is exactly that of a scene built with the new object.
+    ///
+    /// ```
+    /// use fixray::{Fx, Light, Rgb, Scene, Shape, Sphere, Vec3, Error};
+    /// let light = Light::new(Vec3::from_ints(0, 20, 0), Fx::ONE)?;
+    /// let mut scene: Scene<2> = Scene::new(light, Fx::from_num(0.2), Rgb::BLACK)?;
+    /// let ball = scene.add_sphere(Sphere::new(Vec3::from_ints(0, 0, -10), Fx::ONE)?, Rgb::WHITE)?;
+    /// let moved = Sphere::new(Vec3::from_ints(3, 0, -10), Fx::ONE)?;
+    /// scene.set_shape(ball, Shape::Sphere(moved))?;
+    /// assert_eq!(scene.objects()[ball].shape, Shape::Sphere(moved));
+    /// assert_eq!(scene.set_shape(5, Shape::Sphere(moved)), Err(Error::NoSuchObject { index: 5, count: 1 }));
+    /// # Ok::<(), fixray::Error>(())
+    /// ```
+    pub fn set_object(&mut self, index: usize, object: Object) -> Result<(), Error> {
+        let count = self.objects.len();
+        let slot = self
+            .objects
+            .get_mut(index)
+            .ok_or(Error::NoSuchObject { index, count })?;
+        *slot = object;
+        for (cones, light) in self.cones.iter_mut().zip(&self.lights) {
+            cones[index] = ShadowCone::new(light.position, &object.shape);
+        }
+        Ok(())
+    }
+
+    /// Moves or replaces the shape of object `index`, keeping its material (see
+    /// [`Scene::set_object`]).
+    pub fn set_shape(&mut self, index: usize, shape: Shape) -> Result<(), Error> {
+        let material = self.material_of(index)?;
+        self.set_object(index, Object { shape, material })
+    }
+
+    /// Changes what object `index` is made of, keeping its shape.
+    pub fn set_material(
+        &mut self,
+        index: usize,
+        material: impl Into<Material>,
+    ) -> Result<(), Error> {
+        let count = self.objects.len();
+        let object = self
+            .objects
+            .get_mut(index)
+            .ok_or(Error::NoSuchObject { index, count })?;
+        object.material = material.into();
+        Ok(())
+    }
+
+    /// The material of object `index`.
+    fn material_of(&self, index: usize) -> Result<Material, Error> {
+        let count = self.objects.len();
+        self.objects
+            .get(index)
+            .map(|object| object.material)
+            .ok_or(Error::NoSuchObject { index, count })
+    }
+
+    /// Moves, brightens or dims light `index`; its shadow cones are worked out again.
+    pub fn set_light(&mut self, index: usize, light: Light) -> Result<(), Error> {
+        let count = self.lights.len();
+        let slot = self
+            .lights
+            .get_mut(index)
+            .ok_or(Error::NoSuchLight { index, count })?;
+        *slot = light;
+        for (cone, object) in self.cones[index].iter_mut().zip(&self.objects) {
+            *cone = ShadowCone::new(light.position, &object.shape);
+        }
+        Ok(())
+    }
+
+    /// Sets the ambient light, 0 to 1.
+    pub fn set_ambient(&mut self, ambient: Fx) -> Result<(), Error> {
+        self.ambient = unit_interval(ambient, "ambient light")?;
+        Ok(())
+    }
+
+    /// Sets what escaping rays see: an [`Rgb`] or a [`Background`] gradient.
+    pub fn set_background(&mut self, background: impl Into<Background>) {
+        self.background = background.into();
+    }
+
     /// Turns shadow rays on or off (on by default).
     pub fn set_shadows(&mut self, on: bool) {
         self.shadows = on;
