@@ -34,25 +34,23 @@ const SIZE: u16 = 240;
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let panel = Rc::new(RefCell::new(Panel::new()));
-    let (spi, dc) = (Bus(panel.clone()), DataCommand(panel.clone()));
+    let (spi, dc, mut delay) = (Bus(panel.clone()), DataCommand(panel.clone()), NoDelay);
 
     // The driver, as on a board: an SPI device, the data/command pin, a delay.
     let mut spi_buffer = [0u8; 512];
     let interface = SpiInterface::new(spi, dc, &mut spi_buffer);
     let mut display = Builder::new(ST7789, interface)
-        .display_size(SIZE, SIZE)
+        .display_size(240, 240)
         .invert_colors(ColorInversion::Inverted)
-        .init(&mut NoDelay)
-        .map_err(|e| format!("display init: {e:?}"))?;
+        .init(&mut delay)
+        .expect("the display starts");
 
     // The picture: a camera the size of the display, drawn 16 rows per bus transfer.
-    let (scene, camera) = (demo::scene(), demo::camera(SIZE, SIZE)?);
-    let area = Rectangle::new(Point::zero(), Size::new(SIZE.into(), SIZE.into()));
+    let (scene, camera) = (demo::scene(), demo::camera(240, 240)?);
+    let area = Rectangle::new(Point::zero(), Size::new(240, 240));
     let viewport = Viewport::new(&scene, &camera, area)?;
-    let mut band = [Rgb::BLACK; SIZE as usize * 16];
-    viewport
-        .render(&mut band, &mut display)
-        .map_err(|e| format!("render: {e:?}"))?;
+    let mut band = [Rgb::BLACK; 240 * 16];
+    viewport.render(&mut band, &mut display)?;
 
     // Every pixel went over the bus once, and the panel shows the scene.
     let panel = panel.borrow();
