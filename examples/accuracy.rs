@@ -4,6 +4,7 @@
 //! ```text
 //! cargo run --release --example accuracy
 //! cargo run --release --example accuracy -- --diff out/classic-diff.ppm
+//! cargo run --release --example accuracy -- --markdown    # the README's table
 //! ```
 //!
 //! Columns: pixels whose object agrees; pixels within ±2 per channel; of the pixels whose
@@ -17,10 +18,17 @@ use fixray::{Camera, Error, Scene, demo};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let diff = std::env::args().skip_while(|a| a != "--diff").nth(1);
-    println!(
-        "{:<20} {:>8} {:>8} {:>7} {:>8} {:>9} {:>8} {:>9} {:>9}",
-        "scene", "size", "object%", "±2 %", "±4 ag.%", "max err", "PSNR dB", "max |Δt|", "Δt/t"
-    );
+    if markdown() {
+        println!(
+            "| scene | size | object agrees | within ±2 | agreeing within ±4 | max channel error \
+             | PSNR | max \\|Δt\\| (relative) |\n|---|---|---|---|---|---|---|---|"
+        );
+    } else {
+        println!(
+            "{:<20} {:>8} {:>8} {:>7} {:>8} {:>9} {:>8} {:>9} {:>9}",
+            "scene", "size", "object%", "±2 %", "±4 ag.%", "max err", "PSNR dB", "max |Δt|", "Δt/t"
+        );
+    }
     let demo_scene = demo::scene();
     for (cols, rows) in [(160u16, 128u16), (320, 240), (80, 64), (128, 64)] {
         let camera = demo::camera(cols, rows)?;
@@ -58,19 +66,32 @@ fn row(
             image.push(s.abs_diff(r).saturating_mul(32));
         }
     });
-    println!(
-        "{:<20} {:>8} {:>8.3} {:>7.3} {:>8.3} {:>4} ({:>3}) {:>8.1} {:>9.4} {:>9.2e}",
-        name,
-        format!("{cols}x{rows}"),
-        a.same_object_percent(),
-        a.within_2_percent(),
-        a.same_within_4_percent(),
-        a.max_channel_error,
-        a.max_channel_error_any,
-        a.psnr_db(),
-        a.max_dt,
-        a.max_dt_relative
-    );
+    if markdown() {
+        println!(
+            "| {name} | {cols} × {rows} | {:.3} % | {:.3} % | {:.3} % | {} | {:.1} dB | {} ({}) |",
+            a.same_object_percent(),
+            a.within_2_percent(),
+            a.same_within_4_percent(),
+            a.max_channel_error,
+            a.psnr_db(),
+            two_digits(a.max_dt),
+            scientific(a.max_dt_relative)
+        );
+    } else {
+        println!(
+            "{:<20} {:>8} {:>8.3} {:>7.3} {:>8.3} {:>4} ({:>3}) {:>8.1} {:>9.4} {:>9.2e}",
+            name,
+            format!("{cols}x{rows}"),
+            a.same_object_percent(),
+            a.within_2_percent(),
+            a.same_within_4_percent(),
+            a.max_channel_error,
+            a.max_channel_error_any,
+            a.psnr_db(),
+            a.max_dt,
+            a.max_dt_relative
+        );
+    }
     if let Some(path) = diff {
         let mut ppm = format!("P6\n{cols} {rows}\n255\n").into_bytes();
         ppm.extend(image);
@@ -81,4 +102,35 @@ fn row(
         println!("  difference image of {name} {cols}x{rows} written to {path}");
     }
     Ok(())
+}
+
+/// Whether to print the table as Markdown, as the README shows it.
+fn markdown() -> bool {
+    std::env::args().any(|a| a == "--markdown")
+}
+
+/// `v` to two significant digits (one decimal from 1 up): 7.7, 0.012.
+fn two_digits(v: f64) -> String {
+    if v >= 1.0 || v <= 0.0 {
+        format!("{v:.1}")
+    } else {
+        // v < 1, so its first digit is at least one place after the point.
+        let places = (-v.log10().floor()) as usize + 1;
+        format!("{v:.places$}")
+    }
+}
+
+/// `v` as `1.9 × 10⁻³`.
+fn scientific(v: f64) -> String {
+    let text = format!("{v:.1e}");
+    let (mantissa, exponent) = text.split_once('e').unwrap_or((&text, "0"));
+    let superscript: String = exponent
+        .chars()
+        .map(|c| match c {
+            '-' => '⁻',
+            d => ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹']
+                [d.to_digit(10).unwrap_or(0) as usize],
+        })
+        .collect();
+    format!("{mantissa} × 10{superscript}")
 }

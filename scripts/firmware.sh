@@ -12,24 +12,73 @@
 # f32), on the demo scene or the classic one (`_classic`), the latter also without shadow rays
 # (`_noshadow`) and without mirrors (`_nomirror`) to show what each costs.
 #
-# Usage: scripts/firmware.sh
+# Usage: scripts/firmware.sh [--markdown]
 #
-# It installs nothing. It needs cargo with the targets thumbv6m-none-eabi,
-# thumbv7em-none-eabihf and riscv32imc-unknown-none-elf, qemu-system-arm (machines microbit
-# and mps2-an386), qemu-system-riscv32 (machine virt) and timeout, and says which are missing.
-# The QEMU command lines (-icount shift=0, semihosting, a `timeout`) are the runners in
-# firmware/.cargo/config.toml, so `cargo run --release --target T --bin B` inside firmware/
-# runs one firmware exactly as this script does. Each run's full output is kept in
-# firmware/target/firmware-logs/.
+# The chips, their QEMU machines and their names in tables are firmware/targets.tsv's lines;
+# the script checks that firmware/.cargo/config.toml's runners boot each target on its machine.
+# It installs nothing. It needs cargo with those Rust targets, their QEMU system emulators
+# and machines, and timeout, and says which are missing. The QEMU command lines
+# (-icount shift=0, semihosting, a `timeout`) are the runners in firmware/.cargo/config.toml,
+# so `cargo run --release --target T --bin B` inside firmware/ runs one firmware exactly as
+# this script does. Each run's full output is kept in firmware/target/firmware-logs/.
+#
+# Every run also writes the README's performance tables (instructions per pixel; flash and
+# RAM), as Markdown from this run's figures, to firmware/target/firmware-tables.md, which
+# scripts/check-readme-tables.sh compares with the README. With --markdown the tables are
+# printed on standard output too, and the report goes to standard error:
+#
+#   scripts/firmware.sh --markdown > tables.md
 #
 # Exit status: 0 if every firmware ran and every hash matched, 1 otherwise, 2 if something
-# it needs is missing.
+# it needs is missing or the target table and config.toml disagree.
 
 set -euo pipefail
+export LC_ALL=C # decimal points and sorting the same everywhere
+
+markdown=0
+case ${1:-} in
+    --markdown) markdown=1; exec 3>&1 1>&2 ;; # the tables on stdout, the report on stderr
+    "") ;;
+    *) echo "usage: scripts/firmware.sh [--markdown]" >&2; exit 2 ;;
+esac
 
 root=$(cd "$(dirname "$0")/.." && pwd)
 firmware="$root/firmware"
-targets=(thumbv6m-none-eabi thumbv7em-none-eabihf riscv32imc-unknown-none-elf)
+
+# --- The chips: firmware/targets.tsv -------------------------------------------------------
+
+targets=()
+declare -A qemu_of machine_of options_of chip_of board_of
+while IFS=$'\t' read -r target qemu machine options chip board; do
+    [[ -z $target || $target == \#* ]] && continue
+    targets+=("$target")
+    qemu_of[$target]=$qemu machine_of[$target]=$machine chip_of[$target]=$chip
+    [[ $options == - ]] && options=""
+    board_of[$target]=$board options_of[$target]=$options
+done <"$firmware/targets.tsv"
+
+# The runners in config.toml must boot each target on the table's machine, and run no other.
+config="$firmware/.cargo/config.toml"
+disagree=()
+mapfile -t configured < <(sed -n 's/^\[target\.\(.*\)\]$/\1/p' "$config")
+[[ "${configured[*]}" == "${targets[*]}" ]] ||
+    disagree+=("config.toml has runners for (${configured[*]}), the table lists (${targets[*]})")
+for target in "${targets[@]}"; do
+    # The target's section, its lines joined, e.g. `... "qemu-system-arm", "-machine", "microbit", ...`.
+    section=$(awk -v head="[target.$target]" '$0 == head {on = 1; next} /^\[/ {on = 0} on' \
+        "$config" | tr '\n' ' ' | tr -s ' ')
+    want="\"${qemu_of[$target]}\", \"-machine\", \"${machine_of[$target]}\""
+    for option in ${options_of[$target]}; do
+        want+=", \"$option\""
+    done
+    [[ $section == *"$want"* ]] ||
+        disagree+=("config.toml's runner for $target does not start QEMU as $want")
+done
+if ((${#disagree[@]})); then
+    echo "firmware.sh: firmware/targets.tsv and firmware/.cargo/config.toml disagree:" >&2
+    printf '  - %s\n' "${disagree[@]}" >&2
+    exit 2
+fi
 bins=(fixed fixed_noshadow fixed_shoot fixed_rays
     fixed_classic fixed_classic_noshadow fixed_classic_nomirror
     reference reference_classic reference_f32 reference_f32_classic)
@@ -43,8 +92,12 @@ need_command() { # command, how to get it
 need_command cargo "install Rust with rustup"
 need_command rustc "install Rust with rustup"
 need_command timeout "install coreutils"
-need_command qemu-system-arm "apt-get install qemu-system-arm"
-need_command qemu-system-riscv32 "apt-get install qemu-system-misc"
+for qemu in $(printf '%s\n' "${qemu_of[@]}" | sort -u); do
+    case $qemu in
+        qemu-system-arm) need_command "$qemu" "apt-get install qemu-system-arm" ;;
+        *) need_command "$qemu" "apt-get install qemu-system-misc" ;;
+    esac
+done
 if command -v rustc >/dev/null 2>&1; then
     sysroot=$(rustc --print sysroot)
     for target in "${targets[@]}"; do
@@ -52,13 +105,12 @@ if command -v rustc >/dev/null 2>&1; then
             missing+=("the Rust target $target: rustup target add $target")
     done
 fi
-if command -v qemu-system-arm >/dev/null 2>&1; then
-    machines=$(qemu-system-arm -machine help)
-    for machine in microbit mps2-an386; do
-        grep -qw -- "$machine" <<<"$machines" ||
-            missing+=("QEMU machine $machine: a qemu-system-arm that has it (QEMU 7 or later)")
-    done
-fi
+for target in "${targets[@]}"; do
+    qemu=${qemu_of[$target]} machine=${machine_of[$target]}
+    command -v "$qemu" >/dev/null 2>&1 || continue
+    "$qemu" -machine help | grep -qw -- "$machine" ||
+        missing+=("QEMU machine $machine: a $qemu that has it (QEMU 7 or later)")
+done
 if ((${#missing[@]})); then
     echo "firmware.sh: missing, and not installed by this script:" >&2
     printf '  - %s\n' "${missing[@]}" >&2
@@ -93,6 +145,7 @@ line() { # prefix: the line of the current run's report that starts with it
 
 failed=0
 calibrations=()
+declare -A per_pixel_of flash_of ram_of # by "target renderer"
 names=()
 row() { printf '%-28s %-24s %-8s %12s %9s %7s %7s %7s %7s\n' "$@"; }
 row target renderer hash instr/frame instr/px flash ram static stack
@@ -121,6 +174,9 @@ for target in "${targets[@]}"; do
         row "$target" "$renderer" "$verdict" "$(field instructions "$frame")" \
             "$(field per_pixel "$frame")" "$(field flash "$memory")" $((static + stack)) \
             "$static" "$stack"
+        per_pixel_of["$target $renderer"]=$(field per_pixel "$frame")
+        flash_of["$target $renderer"]=$(field flash "$memory")
+        ram_of["$target $renderer"]=$((static + stack))
         if [[ $bin == "${bins[0]}" ]]; then # the counter is the same for every renderer
             counter=$(line counter: | sed 's/^counter: //; s/ instructions_per_tick=.*//')
             per_tick=$(field instructions_per_tick "$(line counter:)")
@@ -140,5 +196,82 @@ echo "instruction counters (QEMU -icount shift=0), each checked by a loop of kno
 printf '  %s\n' "${calibrations[@]}"
 echo "ram = static RAM + peak stack, in bytes; instructions count the render_row calls only."
 echo "built with $(rustc --version), run on $(qemu-system-arm --version | head -n 1)"
+
+# --- The README's tables -------------------------------------------------------------------
+
+# What the tables show of each renderer, in their order.
+cost_rows=(
+    "fixed|\`fixed\`: Q16.16, demo scene (Lambert, one light, hard shadows)"
+    "reference-f32|\`reference-f32\`: the float baseline, demo"
+    "reference-f64|\`reference-f64\`: the f64 reference, demo"
+    "fixed-classic|\`fixed-classic\`: Q16.16, classic scene"
+    "fixed-classic-noshadow|\`fixed-classic-noshadow\`: classic, no shadow rays"
+    "fixed-classic-nomirror|\`fixed-classic-nomirror\`: classic, no mirrors"
+    "reference-f32-classic|\`reference-f32-classic\`"
+    "reference-f64-classic|\`reference-f64-classic\`"
+)
+memory_rows=(fixed reference-f32 reference-f64 fixed-classic reference-f64-classic)
+
+grouped() { # a whole number with its thousands apart, as the README writes them: 46 064
+    local n=$1 out=""
+    [[ -z $n ]] && { echo "—"; return; }
+    while ((${#n} > 3)); do
+        out=" ${n: -3}$out"
+        n=${n:0:${#n}-3}
+    done
+    echo "$n$out"
+}
+per_chip() { # array name, renderer: the figures for every chip, " / " between them
+    local -n figures=$1
+    local target out=()
+    for target in "${targets[@]}"; do
+        out+=("$(grouped "${figures["$target $2"]:-}")")
+    done
+    local IFS=/
+    echo "${out[*]}" | sed 's|/| / |g'
+}
+tables() {
+    local target entry renderer text chips=()
+    for target in "${targets[@]}"; do
+        chips+=("${chip_of[$target]}")
+    done
+    echo "Instructions per pixel at 160 × 128 (\`scripts/firmware.sh --markdown\`, $(rustc --version | cut -d' ' -f1-2), $(qemu-system-arm --version | head -n 1 | sed 's/ emulator version / /; s/ (.*//'), \`opt-level = 3\`, LTO):"
+    echo
+    printf '| renderer, scene |'
+    for target in "${targets[@]}"; do
+        printf ' %s (%s) |' "${chip_of[$target]}" "${board_of[$target]}"
+    done
+    printf '\n|---|'
+    for target in "${targets[@]}"; do
+        printf -- '---:|'
+    done
+    echo
+    for entry in "${cost_rows[@]}"; do
+        renderer=${entry%%|*} text=${entry#*|}
+        printf '| %s |' "$text"
+        for target in "${targets[@]}"; do
+            local value=${per_pixel_of["$target $renderer"]:-}
+            [[ -n $value ]] && value=$(printf '%.0f' "$value")
+            printf ' %s |' "$(grouped "$value")"
+        done
+        echo
+    done
+    echo
+    local IFS=/
+    local names="${chips[*]}"
+    unset IFS
+    echo "Flash and RAM (static RAM + peak stack over set-up and frame), bytes, ${names//\// \/ }:"
+    echo
+    echo "| renderer, scene | flash | RAM |"
+    echo "|---|---|---|"
+    for renderer in "${memory_rows[@]}"; do
+        echo "| \`$renderer\` | $(per_chip flash_of "$renderer") | $(per_chip ram_of "$renderer") |"
+    done
+}
+mkdir -p "$firmware/target"
+tables >"$firmware/target/firmware-tables.md"
+echo "the README's tables, from this run: firmware/target/firmware-tables.md"
+((markdown)) && cat "$firmware/target/firmware-tables.md" >&3
+
 echo "firmware.sh: $( ((failed)) && echo FAILED || echo ok ) in ${SECONDS} s"
 exit "$failed"

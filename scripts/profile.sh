@@ -13,16 +13,21 @@
 set -euo pipefail
 target=${1:?target}; bin=${2:?binary}; shift 2
 root=$(cd "$(dirname "$0")/.." && pwd)
-cd "$root/firmware"
-cargo build --release --quiet --target "$target" --bin "$bin"
 elf="target/$target/release/$bin"
+# The target's QEMU machine and options: firmware/targets.tsv, as scripts/firmware.sh reads it.
+row=$(awk -F '\t' -v t="$target" '$1 == t' "$root/firmware/targets.tsv")
+[[ -n $row ]] || { echo "profile.sh: $target is not in firmware/targets.tsv" >&2; exit 2; }
+IFS=$'\t' read -r _ qemu_bin machine options _ <<<"$row"
+[[ $options == - ]] && options=""
+# shellcheck disable=SC2206 # the options are words
+qemu=("$qemu_bin" -machine "$machine" $options)
 case $target in
-  thumbv6m-none-eabi) qemu=(qemu-system-arm -machine microbit); a2l=arm-none-eabi-addr2line ;;
-  thumbv7em-none-eabihf) qemu=(qemu-system-arm -machine mps2-an386); a2l=arm-none-eabi-addr2line ;;
-  riscv32imc-unknown-none-elf) qemu=(qemu-system-riscv32 -machine virt -bios none); a2l=addr2line ;;
-  *) echo "profile.sh: unknown target $target" >&2; exit 2 ;;
+  thumb*) a2l=arm-none-eabi-addr2line ;;
+  *) a2l=addr2line ;;
 esac
 command -v "$a2l" >/dev/null || { echo "profile.sh: needs $a2l" >&2; exit 2; }
+cd "$root/firmware"
+cargo build --release --quiet --target "$target" --bin "$bin"
 fifo=$(mktemp -u); mkfifo "$fifo"; trap 'rm -f "$fifo"' EXIT
 python3 "$root/scripts/profile.py" "$fifo" "$elf" "$a2l" "$@" &
 timeout 600 "${qemu[@]}" -icount shift=0 -semihosting-config enable=on,target=native \
