@@ -54,7 +54,8 @@
 //! - [`draw`]: onto any `embedded-graphics` display, streamed band by band ([`Viewport`]),
 //!   in [`FromRgb`] colours with Bayer dithering for grey and one-bit displays
 //! - [`demo`]: the scenes the examples, tests and firmware share (demo and classic)
-//! - `reference` (feature `reference`): an independent f64 model of the same maths
+//! - an independent f64 model of the same maths is a crate of its own, `fixray-reference`
+//!   (the `reference/` folder), which sees only this public API
 
 #![no_std]
 #![forbid(unsafe_code)]
@@ -88,9 +89,6 @@ mod sphere;
 mod vec3;
 #[cfg(test)]
 mod xorshift;
-
-#[cfg(feature = "reference")]
-pub mod reference;
 
 pub use background::Background;
 pub use camera::{Camera, MAX_PIXELS};

@@ -1,7 +1,7 @@
 //! [`DScene`]: the objects, the lights, and the chapter's `shoot`.
 
 use super::{DHit, DLight, DObject, DRay, Real};
-use crate::{Background, Rgb};
+use fixray::{Background, Rgb};
 
 /// A scene of up to `N` objects and `L` point lights, with an ambient term, a background,
 /// shadows on or off and a limit on mirror bounces, all in fixed storage.
@@ -155,7 +155,7 @@ impl<const N: usize, const L: usize, F: Real> DScene<N, L, F> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::reference::{DPlane, DSphere, DVec3};
+    use crate::{DPlane, DSphere, DVec3};
 
     const RED: Rgb = Rgb::new(200, 0, 0);
     const GREEN: Rgb = Rgb::new(0, 200, 0);
