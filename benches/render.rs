@@ -6,8 +6,8 @@
 //! ```
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use fixray::reference::{self, DScene};
 use fixray::{Framebuffer, Rgb, demo, render};
+use fixray_reference::{self as reference, DScene};
 use std::hint::black_box;
 
 const W: u16 = 160;

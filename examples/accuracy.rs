@@ -13,8 +13,12 @@
 //! hit the same object. The difference image shows the classic scene at 160 × 128, black
 //! where the renderers agree exactly and brighter where they differ (|Δ| × 32 per channel).
 
-use fixray::reference::{Accuracy, DCamera, DScene, classic_camera, demo_camera};
+#[path = "../tests/support/accuracy.rs"]
+mod accuracy;
+
+use accuracy::Accuracy;
 use fixray::{Camera, Error, Scene, demo};
+use fixray_reference::{DCamera, DScene, classic_camera, demo_camera};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let diff = std::env::args().skip_while(|a| a != "--diff").nth(1);

@@ -2,12 +2,13 @@
 //! 160 × 128, row by row, digested with [`FrameHash`].
 //!
 //! The scenes, cameras and renderers are not written again here: this example compiles the
-//! firmware's own `firmware/src/renderer.rs`, which uses nothing but fixray, so the host runs
+//! firmware's own `firmware/src/renderer.rs`, which uses nothing but fixray and its reference
+//! model (`fixray-reference`), so the host runs
 //! the very code the chips run. `scripts/firmware.sh` compares these hashes with what each
 //! chip prints under QEMU. Run with
 //!
 //! ```text
-//! cargo run --features reference --example frame_hash
+//! cargo run --example frame_hash
 //! ```
 //!
 //! It prints one line per renderer and scene, named as the firmware names its row, e.g.

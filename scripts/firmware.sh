@@ -121,7 +121,7 @@ fi
 
 # Lines of `renderer hash`, e.g. `fixed-classic 0x1234abcd`, for every renderer and scene. The
 # dev profile reuses what `cargo test` built; the hashes are the same in any profile.
-host=$(cd "$root" && cargo run --quiet --features reference --example frame_hash)
+host=$(cd "$root" && cargo run --quiet --example frame_hash)
 declare -A host_hash
 while read -r renderer hash; do
     host_hash[$renderer]=$hash

@@ -61,7 +61,8 @@
 //! - [`draw`]: onto any `embedded-graphics` display, streamed band by band ([`Viewport`]),
 //!   in [`FromRgb`] colours with Bayer dithering for grey and one-bit displays
 //! - [`demo`]: the scenes the examples, tests and firmware share (demo and classic)
-//! - `reference` (feature `reference`): an independent f64 model of the same maths
+//! - an independent f64 model of the same maths is a crate of its own, `fixray-reference`
+//!   (the `reference/` folder), which sees only this public API
 
 #![no_std]
 #![forbid(unsafe_code)]
@@ -78,9 +79,6 @@ mod render;
 mod scene;
 #[cfg(test)]
 mod xorshift;
-
-#[cfg(feature = "reference")]
-pub mod reference;
 
 pub use draw::{DrawError, FromRgb, Viewport};
 pub use error::Error;

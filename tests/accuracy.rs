@@ -3,11 +3,15 @@
 //! The thresholds are the ones the README states for the demo scene: the object hit agrees on
 //! at least 99.9 % of pixels, and where it agrees every 8-bit channel is within ±2.
 
-use fixray::reference::{Accuracy, DCamera, DScene, DVec3};
+#[path = "support/accuracy.rs"]
+mod accuracy;
+
+use accuracy::Accuracy;
 use fixray::{Camera, demo};
+use fixray_reference::{DCamera, DScene, DVec3};
 
 fn demo_dcamera(cols: u16, rows: u16) -> DCamera {
-    fixray::reference::demo_camera(cols, rows).unwrap()
+    fixray_reference::demo_camera(cols, rows).unwrap()
 }
 
 fn check(name: &str, a: &Accuracy) {
@@ -75,7 +79,7 @@ fn classic_scene_at_160_by_128_matches_the_reference() {
     let scene = demo::classic();
     let dscene = DScene::from_scene(&scene).unwrap();
     let camera = demo::classic_camera(160, 128).unwrap();
-    let dcamera = fixray::reference::classic_camera(160, 128).unwrap();
+    let dcamera = fixray_reference::classic_camera(160, 128).unwrap();
     let a = Accuracy::measure(&scene, &camera, &dscene, &dcamera);
     eprintln!("classic 160x128: {a:?}");
     assert!(a.same_object_percent() >= 99.5, "{a:?}");
@@ -95,7 +99,7 @@ fn supersampled_rows_match_the_reference() {
     let (mut within_1, mut worst) = (0, 0u8);
     for row in 0..64 {
         fixray::render_row_supersampled(&scene, &camera, row, 2, &mut fixed).unwrap();
-        fixray::reference::render_row_supersampled(&dscene, &dcamera, row, 2, &mut float);
+        fixray_reference::render_row_supersampled(&dscene, &dcamera, row, 2, &mut float);
         for (a, b) in fixed.iter().zip(&float) {
             let d =
                 a.r.abs_diff(b.r)

@@ -5,11 +5,11 @@
 //! The judge of a ray is an f64 model of the same screen built here from the constructor's
 //! own inputs (not from fixray's rounded camera): where a ray lands on that screen, in pixels.
 
-use fixray::reference::{DRay, DScene, DVec3};
 use fixray::{
     Camera, Error, Ray, Rgb, demo, render_row, render_row_supersampled, shoot_row,
     shoot_row_skipping,
 };
+use fixray_reference::{DRay, DScene, DVec3};
 
 type V = [f64; 3];
 

@@ -2,6 +2,9 @@
 //! an eye placed exactly on a surface. Each test is a reproducer of a wrong picture that an
 //! outside check once found.
 
+#[path = "support/accuracy.rs"]
+mod accuracy;
+
 use fixray::{Camera, Fx, Light, Material, Plane, Rgb, Scene, Sphere, Vec3, render_row};
 
 const SKY: Rgb = Rgb::new(40, 60, 200);
@@ -171,7 +174,8 @@ fn an_eye_on_a_plane_sees_it_edge_on_and_not_at_all() {
 /// rule (the sign of the quadratic's constant term), for the two eyes on surfaces above.
 #[test]
 fn the_reference_agrees_on_eyes_placed_on_surfaces() {
-    use fixray::reference::{Accuracy, DCamera, DScene, DVec3};
+    use crate::accuracy::Accuracy;
+    use fixray_reference::{DCamera, DScene, DVec3};
     let dcamera = DCamera::look_at(
         DVec3::ZERO,
         DVec3::new(0.0, 0.0, -1.0),

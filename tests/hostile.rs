@@ -34,7 +34,7 @@
 //! - `demo`: `scene`, `camera`, `classic`, `classic_camera`, `BACKGROUND`, `SCREEN_HEIGHT`,
 //!   `SCREEN_DISTANCE`, `CLASSIC_FOV_DEGREES`.
 //!
-//! The `reference` module (feature `reference`) is the f64 model the other tests judge by; it
+//! The f64 reference model (the `fixray-reference` crate) is what the other tests judge by; it
 //! is not fed hostile input here.
 
 mod common;

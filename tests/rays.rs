@@ -14,8 +14,8 @@
 //! Measured over 2 million random rays in ±100 units, the largest |Δt| was 0.81 of the sphere
 //! bound and 0.84 of the plane bound.
 
-use fixray::reference::{DPlane, DRay, DSphere, DVec3};
 use fixray::{FAR, Fx, Plane, Ray, Sphere, Vec3};
+use fixray_reference::{DPlane, DRay, DSphere, DVec3};
 use proptest::prelude::*;
 
 /// World units: the margin around tangency and t = 0 where hit or miss may differ.

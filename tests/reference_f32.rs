@@ -25,8 +25,8 @@
 //! is held to 99.9 % (measured: 100 %): a silhouette moves only where a ray passes within
 //! f32's error of a rim, and ±1 to 99.9 % of pixels (measured: 99.956 %, the 9 ties).
 
-use fixray::reference::{self, DCamera, DHit, DScene, DShape, DVec3, Real};
 use fixray::{Rgb, demo};
+use fixray_reference::{self as reference, DCamera, DHit, DScene, DShape, DVec3, Real};
 
 const COLS: u16 = 160;
 const ROWS: u16 = 128;
@@ -109,12 +109,12 @@ fn channel_difference(a: Rgb, b: Rgb) -> u8 {
 
 /// The demo camera in precision `F`, from the same `f32` constants as the fixed one.
 fn demo_camera<F: Real>() -> DCamera<F> {
-    fixray::reference::demo_camera(COLS, ROWS).unwrap()
+    fixray_reference::demo_camera(COLS, ROWS).unwrap()
 }
 
 /// The classic camera in precision `F`.
 fn classic_camera<F: Real>() -> DCamera<F> {
-    fixray::reference::classic_camera(COLS, ROWS).unwrap()
+    fixray_reference::classic_camera(COLS, ROWS).unwrap()
 }
 
 fn check(name: &str, d: &Difference) {

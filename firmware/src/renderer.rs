@@ -2,14 +2,14 @@
 //! them — fixray's Q16.16 renderer ([`Fixed`]) and its reference model in `f64` or `f32`
 //! ([`Reference`]).
 //!
-//! This file uses only `fixray`, so the host compiles it too: `examples/frame_hash.rs`
-//! includes it (`#[path]`) and hashes the very frames the chips render, built by the same
-//! code, for `scripts/firmware.sh` to compare.
+//! This file uses only `fixray` and its reference model, `fixray-reference`, so the host
+//! compiles it too: `examples/frame_hash.rs` includes it (`#[path]`) and hashes the very frames
+//! the chips render, built by the same code, for `scripts/firmware.sh` to compare.
 
 use core::fmt::Debug;
 
-use fixray::reference::{self, DCamera, DScene, Real};
 use fixray::{Camera, Error, Fx, Material, Object, Rgb, Scene, demo};
+use fixray_reference::{self as reference, DCamera, DScene, Real};
 
 /// Columns of the frame.
 pub const COLS: u16 = 160;

@@ -5,7 +5,7 @@ use core::ops::{Add, Div, Mul, Neg, Sub};
 use super::Real;
 
 /// A point or a direction with three components, `f64` unless `F` says `f32`: the reference
-/// twin of [`Vec3`](crate::Vec3).
+/// twin of [`Vec3`](fixray::Vec3).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct DVec3<F: Real = f64> {
     /// x component.
@@ -90,11 +90,11 @@ impl<F: Real> DVec3<F> {
     }
 }
 
-impl<F: Real> From<crate::Vec3> for DVec3<F> {
+impl<F: Real> From<fixray::Vec3> for DVec3<F> {
     /// The Q16.16 vector in `F`: exact in `f64` (every Q16.16 number is an `f64`), the
     /// nearest `f32` in `f32`.
-    fn from(v: crate::Vec3) -> Self {
-        let f = |x: crate::Fx| F::from_f64(x.to_num::<f64>());
+    fn from(v: fixray::Vec3) -> Self {
+        let f = |x: fixray::Fx| F::from_f64(x.to_num::<f64>());
         DVec3::new(f(v.x), f(v.y), f(v.z))
     }
 }
@@ -162,8 +162,8 @@ mod tests {
 
     #[test]
     fn converts_q16_16_exactly() {
-        let f = crate::Fx::from_num;
-        let v = crate::Vec3 {
+        let f = fixray::Fx::from_num;
+        let v = fixray::Vec3 {
             x: f(1.5),
             y: f(-0.25),
             z: f(1000.0),

@@ -1,7 +1,7 @@
 //! [`render_row`] and [`render`]: the chapter's raycasting loop over every pixel.
 
 use super::{DCamera, DScene, Real};
-use crate::Rgb;
+use fixray::Rgb;
 
 /// Shades display row `row` (0 is the top) into `out`, one colour per column, left to right.
 ///
@@ -89,7 +89,7 @@ pub fn render<const N: usize, const L: usize, F: Real>(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::reference::{DObject, DPlane, DSphere, DVec3};
+    use crate::{DObject, DPlane, DSphere, DVec3};
 
     const SKY: Rgb = Rgb::new(0, 0, 255);
     const BALL: Rgb = Rgb::new(255, 0, 0);

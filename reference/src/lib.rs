@@ -1,12 +1,12 @@
-//! An independent `f64` model of the raycaster, for testing the Q16.16 renderer against.
+//! An independent `f64` model of fixray's raycaster, for testing the Q16.16 renderer against.
 //!
-//! This module is compiled only with the cargo feature `reference`. It follows the same
-//! chapter (sections 4.1–4.4) and the same shading model as the fixed-point core but shares
-//! none of its code: its types are `f64` twins named with a `D` prefix ([`DVec3`], [`DRay`],
-//! [`DPlane`], [`DSphere`], [`DHit`], [`DCamera`], [`DLight`], [`DMaterial`], [`DScene`]), so a
-//! mistake in one model shows up as a disagreement with the other rather than being copied
-//! into both. Plain data it shares with the fixed side: [`Rgb`](crate::Rgb) colours and the
-//! [`Background`](crate::Background) gradient's two ends.
+//! A crate of its own, so the compiler sees to it that it uses only fixray's public API. It
+//! follows the same chapter (sections 4.1–4.4) and the same shading model as the fixed-point
+//! core but shares none of its code: its types are `f64` twins named with a `D` prefix
+//! ([`DVec3`], [`DRay`], [`DPlane`], [`DSphere`], [`DHit`], [`DCamera`], [`DLight`],
+//! [`DMaterial`], [`DScene`]), so a mistake in one model shows up as a disagreement with the
+//! other rather than being copied into both. Plain data it shares with the fixed side:
+//! [`Rgb`](fixray::Rgb) colours and the [`Background`](fixray::Background) gradient's two ends.
 //!
 //! # In `f32`
 //!
@@ -14,7 +14,7 @@
 //! `DScene<8>` is `DScene<8, 4, f64>`, `DCamera` is `DCamera<f64>`. Naming `f32` instead
 //! (`DScene<8, 4, f32>`, `DCamera<f32>`) runs the same model in single precision throughout:
 //! the float baseline for chips whose FPU, like the Cortex-M4F's, has only `f32`. How far the
-//! `f32` picture is from the `f64` one is measured in `tests/reference_f32.rs`.
+//! `f32` picture is from the `f64` one is measured in fixray's `tests/reference_f32.rs`.
 //!
 //! The pipeline is the chapter's raycasting loop:
 //!
@@ -29,12 +29,12 @@
 //! 4. [`render_row`] and [`render`] repeat this for every pixel, row 0 at the top.
 //!
 //! Everything is `no_std` and allocation-free; square roots, powers, floors and tangents come
-//! from `libm` (`sqrt` in `f64`, `sqrtf` in `f32`, and so on), so the model computes the same numbers under `cargo test` on a host as on a
-//! microcontroller. Colours are fixray's own [`Rgb`](crate::Rgb), so pictures from the two
+//! from `libm` (`sqrt` in `f64`, `sqrtf` in `f32`, and so on), so the model computes the same
+//! numbers under `cargo test` on a host as on a microcontroller. Colours are fixray's own [`Rgb`](fixray::Rgb), so pictures from the two
 //! models compare directly.
 //!
 //! ```
-//! use fixray::reference::{demo_camera, render, DScene};
+//! use fixray_reference::{demo_camera, render, DScene};
 //! use fixray::{demo, Rgb};
 //!
 //! // The demo scene and camera, in both models.
@@ -55,7 +55,10 @@
 //! # Ok::<(), fixray::Error>(())
 //! ```
 
-mod accuracy;
+#![no_std]
+#![forbid(unsafe_code)]
+#![deny(missing_docs, rustdoc::broken_intra_doc_links)]
+
 mod dcamera;
 mod dcolour;
 mod demo;
@@ -73,7 +76,6 @@ mod from_fixed;
 mod real;
 mod render;
 
-pub use accuracy::Accuracy;
 pub use dcamera::DCamera;
 pub use dcolour::DColour;
 pub use demo::{classic_camera, demo_camera};

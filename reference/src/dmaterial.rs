@@ -1,7 +1,7 @@
 //! [`DMaterial`] and [`DChecker`]: what a surface is made of, and a two-colour pattern.
 
 use super::Real;
-use crate::Rgb;
+use fixray::Rgb;
 
 /// How a surface answers light: Lambert diffuse, a white Blinn-Phong highlight and a mirror.
 ///

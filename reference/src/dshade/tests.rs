@@ -1,8 +1,8 @@
 //! Shading against answers worked out from the geometry by hand.
 
 use super::*;
-use crate::reference::{DChecker, DLight, DMaterial, DPlane, DSphere};
-use crate::{Background, Rgb};
+use crate::{DChecker, DLight, DMaterial, DPlane, DSphere};
+use fixray::{Background, Rgb};
 
 const SKY: Rgb = Rgb::new(10, 20, 30);
 const RED: Rgb = Rgb::new(200, 0, 0);

@@ -1,7 +1,11 @@
-//! [`Accuracy`]: the fixed-point renderer measured against this reference, pixel by pixel.
+//! [`Accuracy`]: the fixed-point renderer measured against the f64 reference, pixel by pixel.
+//!
+//! The measuring lives with the tests, not in the reference model: the model knows nothing of
+//! fixray's renderer. Included with `#[path]` by the tests and by `examples/accuracy.rs`.
+#![allow(dead_code)] // each user of this module reads a different part of it
 
-use super::{DCamera, DScene};
-use crate::{Camera, Rgb, Scene};
+use fixray::{Camera, Rgb, Scene};
+use fixray_reference::{DCamera, DScene};
 
 /// How closely a fixed-point render matches the f64 reference, over every pixel of a frame.
 ///

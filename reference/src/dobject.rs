@@ -1,7 +1,7 @@
 //! [`DShape`] and [`DObject`]: what a scene is made of.
 
 use super::{DHit, DMaterial, DPlane, DRay, DSphere, DVec3, Real};
-use crate::Rgb;
+use fixray::Rgb;
 
 /// One of the shapes a ray can be shot at.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -76,7 +76,7 @@ impl<F: Real> DObject<F> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::reference::DChecker;
+    use crate::DChecker;
 
     const RED: Rgb = Rgb::new(255, 0, 0);
     const BLUE: Rgb = Rgb::new(0, 0, 255);

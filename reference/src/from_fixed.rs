@@ -8,21 +8,21 @@
 //! ([`DPlane::coords`]) are the ones the fixed plane chose.
 
 use super::{DChecker, DLight, DMaterial, DObject, DPlane, DScene, DShape, DSphere, DVec3, Real};
-use crate::Fx;
+use fixray::Fx;
 
 /// The Q16.16 number in `F`: exact in `f64`, the nearest `f32` in `f32`.
 fn f<F: Real>(x: Fx) -> F {
     F::from_f64(x.to_num::<f64>())
 }
 
-impl<F: Real> From<crate::Light> for DLight<F> {
-    fn from(light: crate::Light) -> Self {
+impl<F: Real> From<fixray::Light> for DLight<F> {
+    fn from(light: fixray::Light) -> Self {
         DLight::new(light.position.into(), f(light.intensity))
     }
 }
 
-impl<F: Real> From<crate::Checker> for DChecker<F> {
-    fn from(checker: crate::Checker) -> Self {
+impl<F: Real> From<fixray::Checker> for DChecker<F> {
+    fn from(checker: fixray::Checker) -> Self {
         DChecker {
             size: f(checker.size),
             other: checker.other,
@@ -30,8 +30,8 @@ impl<F: Real> From<crate::Checker> for DChecker<F> {
     }
 }
 
-impl<F: Real> From<crate::Material> for DMaterial<F> {
-    fn from(m: crate::Material) -> Self {
+impl<F: Real> From<fixray::Material> for DMaterial<F> {
+    fn from(m: fixray::Material) -> Self {
         DMaterial {
             colour: m.colour,
             diffuse: f(m.diffuse),
@@ -47,16 +47,16 @@ impl<F: Real> DShape<F> {
     /// The reference twin of a fixed shape, or `None` if it is degenerate in `f64` (a zero
     /// normal, empty bounds or a non-positive radius, which the fixed constructors refuse).
     #[must_use]
-    pub fn from_shape(shape: &crate::Shape) -> Option<Self> {
+    pub fn from_shape(shape: &fixray::Shape) -> Option<Self> {
         Some(match shape {
-            crate::Shape::Plane(p) => {
+            fixray::Shape::Plane(p) => {
                 let plane = DPlane::new(p.point().into(), p.normal().into())?;
                 DShape::Plane(match p.bounds() {
                     Some([min, max]) => plane.bounded(min.map(f), max.map(f))?,
                     None => plane,
                 })
             }
-            crate::Shape::Sphere(s) => {
+            fixray::Shape::Sphere(s) => {
                 let centre = DVec3::from(s.centre());
                 DShape::Sphere(DSphere::new(centre, f(s.radius()))?)
             }
@@ -67,7 +67,7 @@ impl<F: Real> DShape<F> {
 impl<F: Real> DObject<F> {
     /// The reference twin of a fixed object: the same shape and material.
     #[must_use]
-    pub fn from_object(object: &crate::Object) -> Option<Self> {
+    pub fn from_object(object: &fixray::Object) -> Option<Self> {
         Some(DObject::new(
             DShape::from_shape(&object.shape)?,
             object.material.into(),
@@ -81,7 +81,7 @@ impl<const N: usize, const L: usize, F: Real> DScene<N, L, F> {
     ///
     /// `None` if an object is degenerate in `f64`, which a validated fixed scene never has.
     #[must_use]
-    pub fn from_scene(scene: &crate::Scene<N, L>) -> Option<Self> {
+    pub fn from_scene(scene: &fixray::Scene<N, L>) -> Option<Self> {
         let mut out = DScene::new(f(scene.ambient()), scene.background());
         out.set_shadows(scene.shadows());
         out.set_depth(scene.depth());
@@ -99,7 +99,7 @@ impl<const N: usize, const L: usize, F: Real> DScene<N, L, F> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::{Background, Light, Material, Object, Plane, Rgb, Scene, Shape, Sphere, Vec3};
+    use fixray::{Background, Light, Material, Object, Plane, Rgb, Scene, Shape, Sphere, Vec3};
 
     #[test]
     fn the_twin_has_the_same_objects_lights_and_settings() {
@@ -172,7 +172,7 @@ mod tests {
 
     #[test]
     fn the_demo_scene_converts() {
-        let demo = crate::demo::scene();
+        let demo = fixray::demo::scene();
         let twin: DScene<8> = DScene::from_scene(&demo).unwrap();
         assert_eq!(twin.objects().len(), demo.objects().len());
         assert_eq!(twin.lights().len(), demo.lights().len());

@@ -49,7 +49,7 @@ impl<const N: usize, const L: usize, F: Real> DScene<N, L, F> {
                 add_weighted(&mut sum, weight, background(&self.background(), dir));
                 return sum;
             }
-            hit = self.shoot_past(&DRay::new_unchecked(h.point, dir), Some(h.object));
+            hit = self.shoot_from(&DRay::new_unchecked(h.point, dir), Some(h.object));
             bounce += 1;
         }
     }
@@ -74,7 +74,7 @@ impl<const N: usize, const L: usize, F: Real> DScene<N, L, F> {
                 continue;
             }
             if self.shadows()
-                && self.blocked(&DRay::new_unchecked(hit.point, l), distance, hit.object)
+                && self.occluded(&DRay::new_unchecked(hit.point, l), distance, hit.object)
             {
                 continue;
             }
@@ -91,13 +91,14 @@ impl<const N: usize, const L: usize, F: Real> DScene<N, L, F> {
         linear::<F>(object.colour_at(hit.point)).map(|c| c * k + highlight)
     }
 
-    /// Whether the shadow ray from object `from`'s surface towards a light `distance` away is
-    /// stopped by another object short of the light.
-    fn blocked(&self, shadow: &DRay<F>, distance: F, from: usize) -> bool {
+    /// Whether the shadow ray from object `leaving`'s surface towards a light `distance` away
+    /// is stopped by another object short of the light. The twin of fixray's (crate-private)
+    /// `Scene::occluded`, without its shadow cones: every other object is tried.
+    fn occluded(&self, shadow: &DRay<F>, distance: F, leaving: usize) -> bool {
         self.objects()
             .iter()
             .enumerate()
-            .filter(|&(index, _)| index != from)
+            .filter(|&(index, _)| index != leaving)
             .any(|(_, object)| {
                 object
                     .shape

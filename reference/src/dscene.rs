@@ -1,7 +1,7 @@
 //! [`DScene`]: the objects, the lights, and the chapter's `shoot`.
 
 use super::{DHit, DLight, DObject, DRay, Real};
-use crate::{Background, Rgb};
+use fixray::{Background, Rgb};
 
 /// A scene of up to `N` objects and `L` point lights, with an ambient term, a background,
 /// shadows on or off and a limit on mirror bounces, all in fixed storage.
@@ -109,18 +109,19 @@ impl<const N: usize, const L: usize, F: Real> DScene<N, L, F> {
     /// in [`objects`](Self::objects).
     #[must_use]
     pub fn shoot(&self, ray: &DRay<F>) -> Option<DHit<F>> {
-        self.shoot_past(ray, None)
+        self.shoot_from(ray, None)
     }
 
-    /// [`shoot`](Self::shoot) among every object but `skip`: the object a mirror ray leaves.
+    /// [`shoot`](Self::shoot) among every object but `leaving`: the object a mirror ray
+    /// leaves from. The twin of fixray's (crate-private) `Scene::shoot_from`.
     ///
     /// Planes and spheres are convex, so a ray leaving one outward cannot meet it again;
     /// leaving it out replaces nudging the origin off the surface.
-    pub(super) fn shoot_past(&self, ray: &DRay<F>, skip: Option<usize>) -> Option<DHit<F>> {
+    pub(super) fn shoot_from(&self, ray: &DRay<F>, leaving: Option<usize>) -> Option<DHit<F>> {
         self.objects
             .iter()
             .enumerate()
-            .filter(|&(index, _)| Some(index) != skip)
+            .filter(|&(index, _)| Some(index) != leaving)
             .filter_map(|(index, object)| {
                 let hit = object.shape.intersect(ray)?;
                 Some(DHit {
@@ -155,7 +156,7 @@ impl<const N: usize, const L: usize, F: Real> DScene<N, L, F> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::reference::{DPlane, DSphere, DVec3};
+    use crate::{DPlane, DSphere, DVec3};
 
     const RED: Rgb = Rgb::new(200, 0, 0);
     const GREEN: Rgb = Rgb::new(0, 200, 0);
@@ -192,7 +193,7 @@ mod tests {
         let s = scene(&[sphere(-5.0, GREEN), sphere(-5.0, RED), sphere(-5.0, SKY)]);
         assert_eq!(s.shoot(&down_z()).map(|h| h.object), Some(0));
         assert_eq!(s.trace(&down_z()).1, GREEN);
-        assert_eq!(s.shoot_past(&down_z(), Some(0)).map(|h| h.object), Some(1));
+        assert_eq!(s.shoot_from(&down_z(), Some(0)).map(|h| h.object), Some(1));
     }
 
     #[test]

@@ -1,7 +1,7 @@
-//! The reference twins of [`crate::demo`]'s cameras, built from the same `f32` constants.
+//! The reference twins of [`fixray::demo`]'s cameras, built from the same `f32` constants.
 
 use super::{DCamera, DVec3, Real};
-use crate::demo;
+use fixray::demo;
 
 /// The twin of [`demo::camera`]: the chapter's pinhole camera with a screen
 /// `SCREEN_HEIGHT · cols / rows` wide and [`demo::SCREEN_HEIGHT`] high at

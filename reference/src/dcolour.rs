@@ -1,7 +1,7 @@
 //! Colours while they are being summed: one float a channel, 1.0 standing for 255.
 
 use super::{DVec3, Real};
-use crate::{Background, Rgb};
+use fixray::{Background, Rgb};
 
 /// A colour in linear units: red, green, blue, each 1.0 for a channel of 255.
 ///
