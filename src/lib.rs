@@ -51,8 +51,10 @@
 //! - output: [`render`], [`render_row`], [`render_row_supersampled`], [`shoot_row`],
 //!   [`shoot_row_skipping`],
 //!   [`Framebuffer`], [`FrameHash`]
-//! - [`draw`]: onto any `embedded-graphics` display, streamed band by band ([`Viewport`]),
-//!   in [`FromRgb`] colours with Bayer dithering for grey and one-bit displays
+//! - [`draw`]: onto any `embedded-graphics` display at a point, clipped to it: a
+//!   [`Viewport`] drawn as one [`Picture`] (an embedded-graphics `Drawable`) or band by band,
+//!   in every embedded-graphics colour type ([`FromRgb`]), Bayer-dithered where a channel has
+//!   fewer than 8 bits; [`DrawError`] for anything that draws
 //! - [`demo`]: the scenes the examples, tests and firmware share (demo and classic)
 //! - `reference` (feature `reference`): an independent f64 model of the same maths
 
@@ -95,7 +97,7 @@ pub mod reference;
 pub use background::Background;
 pub use camera::{Camera, MAX_PIXELS};
 pub use color::Rgb;
-pub use draw::{DrawError, FromRgb, Viewport};
+pub use draw::{DrawError, FromRgb, Picture, Viewport};
 pub use error::Error;
 pub use framebuffer::Framebuffer;
 pub use fx::{FAR, Fx, LIMIT, fx_from_f32, mul};
