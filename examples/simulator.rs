@@ -1,16 +1,16 @@
-//! A scene (the demo, or the classic one) drawn on an `embedded-graphics-simulator` display, streamed row by row
-//! exactly as on a microcontroller, then saved as a PNG or shown in a window.
+//! A scene (the demo, or the classic one) drawn on an `embedded-graphics-simulator` display,
+//! streamed row by row exactly as on a microcontroller, then saved as a PNG. Headless: it
+//! needs no window system.
 //!
 //! ```text
 //! cargo run --release --example simulator                     # writes out/simulator.png
 //! cargo run --release --example simulator -- --png docs/demo.png --size 160x128 --color rgb888
 //! cargo run --release --example simulator -- --size 128x64 --color binary   # a one-bit OLED
 //! cargo run --release --example simulator -- --scene classic --png docs/classic.png
-//! cargo run --release --features window --example simulator   # a window (needs libsdl2-dev)
 //! ```
 //!
-//! In the window the arrow keys orbit the camera around the scene, `+` and `-` zoom (the field
-//! of view), Escape quits; each change re-renders, and the title shows the render time.
+//! To look around a scene in the simulator's own window, see the `window` crate beside this
+//! one (`cd window && cargo run --release`).
 
 use std::convert::Infallible;
 use std::path::{Path, PathBuf};
@@ -18,7 +18,7 @@ use std::process::ExitCode;
 use std::time::{Duration, Instant};
 
 use embedded_graphics::pixelcolor::{BinaryColor, Gray8, Rgb565, Rgb888};
-use embedded_graphics::prelude::{Dimensions, PixelColor, Size};
+use embedded_graphics::prelude::{PixelColor, Point, Size};
 use embedded_graphics_simulator::{OutputSettings, SimulatorDisplay};
 use fixray::{Camera, DrawError, FromRgb, MAX_PIXELS, Rgb, Scene, Viewport, demo};
 
@@ -32,8 +32,7 @@ usage: simulator [--scene demo|classic] [--png FILE] [--size WxH] [--color rgb56
   --color C     the display's colour format (default: rgb888); gray8 and binary are dithered
   --help        this text
 
-Built with `--features window` and without --png, it opens a window instead:
-arrow keys orbit, + and - zoom, Escape quits.";
+For a window (arrow keys orbit, + and - zoom), run the window crate: cd window && cargo run";
 
 /// The display's colour format.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -173,7 +172,7 @@ where
 {
     let mut display =
         SimulatorDisplay::<C>::new(Size::new(camera.cols().into(), camera.rows().into()));
-    let view = Viewport::new(scene, camera, display.bounding_box())?;
+    let view = Viewport::at(scene, camera, Point::zero());
     // One row of RAM, as on a microcontroller: 3 bytes a column.
     let mut row = [Rgb::BLACK; MAX_PIXELS as usize];
     let start = Instant::now();
@@ -181,7 +180,7 @@ where
     Ok((display, start.elapsed()))
 }
 
-/// The rendered picture as RGB888 bytes, row by row, for a PNG or a window.
+/// The rendered picture as RGB888 bytes, row by row, for a PNG.
 struct Picture {
     image: embedded_graphics_simulator::OutputImage<Rgb888>,
     took: Duration,
@@ -237,20 +236,8 @@ fn write_png(options: &Options, path: &Path) -> Result<(), String> {
 }
 
 fn run(options: &Options) -> Result<(), String> {
-    if let Some(path) = &options.png {
-        return write_png(options, path);
-    }
-    #[cfg(feature = "window")]
-    {
-        window::run(options)
-    }
-    #[cfg(not(feature = "window"))]
-    {
-        write_png(
-            options,
-            Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/out/simulator.png")),
-        )
-    }
+    let default = Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/out/simulator.png"));
+    write_png(options, options.png.as_deref().unwrap_or(default))
 }
 
 fn main() -> ExitCode {
@@ -269,126 +256,6 @@ fn main() -> ExitCode {
         Err(message) => {
             eprintln!("simulator: {message} (see --help)");
             ExitCode::from(2)
-        }
-    }
-}
-
-/// The SDL window. The simulator crate's own `Window` cannot change its title after it opens,
-/// so the window is SDL's; the picture is still the simulator display's output image.
-#[cfg(feature = "window")]
-mod window {
-    use sdl2::event::Event;
-    use sdl2::keyboard::Keycode;
-    use sdl2::pixels::PixelFormatEnum;
-
-    use super::{Camera, Format, Options, picture};
-
-    /// The camera orbits this point, the middle of the demo's spheres, at a fixed distance;
-    /// from azimuth 0 and elevation 0 it sees what the demo camera sees.
-    const TARGET: [f32; 3] = [0.0, 0.0, -15.0];
-    const DISTANCE: f32 = 15.0;
-
-    /// Where the camera is: angles in degrees.
-    struct Orbit {
-        azimuth: f32,
-        elevation: f32,
-        fov: f32,
-    }
-
-    impl Orbit {
-        fn camera(&self, cols: u16, rows: u16) -> Result<Camera, String> {
-            Camera::orbit(
-                TARGET,
-                DISTANCE,
-                self.azimuth,
-                self.elevation,
-                self.fov,
-                cols,
-                rows,
-            )
-            .map_err(|e| e.to_string())
-        }
-
-        /// Applies a key; `true` if the view changed.
-        fn key(&mut self, key: Keycode) -> bool {
-            let before = (self.azimuth, self.elevation, self.fov);
-            match key {
-                Keycode::LEFT => self.azimuth -= 10.0,
-                Keycode::RIGHT => self.azimuth += 10.0,
-                // Above −10° the eye stays over the ground (y = −4); below 80° `up` is never
-                // parallel to the view.
-                Keycode::UP => self.elevation = (self.elevation + 5.0).min(80.0),
-                Keycode::DOWN => self.elevation = (self.elevation - 5.0).max(-10.0),
-                Keycode::PLUS | Keycode::KP_PLUS | Keycode::EQUALS => {
-                    self.fov = (self.fov / 1.25).max(10.0)
-                }
-                Keycode::MINUS | Keycode::KP_MINUS => self.fov = (self.fov * 1.25).min(120.0),
-                _ => {}
-            }
-            before != (self.azimuth, self.elevation, self.fov)
-        }
-    }
-
-    pub(super) fn run(options: &Options) -> Result<(), String> {
-        let (cols, rows) = (u32::from(options.cols), u32::from(options.rows));
-        let scale = (640 / cols).min(480 / rows).clamp(1, 8);
-        let sdl = sdl2::init()?;
-        let window = sdl
-            .video()?
-            .window("fixray", cols * scale, rows * scale)
-            .position_centered()
-            .build()
-            .map_err(|e| e.to_string())?;
-        let mut canvas = window.into_canvas().build().map_err(|e| e.to_string())?;
-        let creator = canvas.texture_creator();
-        let mut texture = creator
-            .create_texture_streaming(PixelFormatEnum::RGB24, cols, rows)
-            .map_err(|e| e.to_string())?;
-        let mut events = sdl.event_pump()?;
-        let scene = options.scene.scene();
-        let mut orbit = Orbit {
-            azimuth: 0.0,
-            elevation: 0.0,
-            fov: 60.0,
-        };
-        let mut changed = true;
-        loop {
-            if changed {
-                let camera = orbit.camera(options.cols, options.rows)?;
-                let frame = picture(&scene, &camera, options.format).map_err(|e| e.to_string())?;
-                texture
-                    .update(
-                        None,
-                        frame.image.as_image_buffer().as_raw(),
-                        3 * cols as usize,
-                    )
-                    .map_err(|e| e.to_string())?;
-                let title = format!(
-                    "fixray {}x{} {}: {:.1} ms a frame (arrows orbit, +/- zoom, Esc quits)",
-                    cols,
-                    rows,
-                    Format::name(options.format),
-                    frame.took.as_secs_f64() * 1e3
-                );
-                canvas
-                    .window_mut()
-                    .set_title(&title)
-                    .map_err(|e| e.to_string())?;
-                changed = false;
-            }
-            canvas.copy(&texture, None, None)?;
-            canvas.present();
-            match events.wait_event() {
-                Event::Quit { .. }
-                | Event::KeyDown {
-                    keycode: Some(Keycode::ESCAPE),
-                    ..
-                } => return Ok(()),
-                Event::KeyDown {
-                    keycode: Some(key), ..
-                } => changed = orbit.key(key),
-                _ => {}
-            }
         }
     }
 }

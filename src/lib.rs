@@ -58,8 +58,10 @@
 //!   ([`FrameHash`] digests them); `accel/` holds every speed-up of that walk ([`RowRays`],
 //!   row culling, runs of columns; and the shadow cones the scene keeps), each bit-identical to tracing the row's
 //!   pixels one by one.
-//! - [`draw`]: onto any `embedded-graphics` display, streamed band by band ([`Viewport`]),
-//!   in [`FromRgb`] colours with Bayer dithering for grey and one-bit displays
+//! - [`draw`]: onto any `embedded-graphics` display at a point, clipped to it: a
+//!   [`Viewport`] drawn as one [`Picture`] (an embedded-graphics `Drawable`) or band by band,
+//!   in every embedded-graphics colour type ([`FromRgb`]), Bayer-dithered where a channel has
+//!   fewer than 8 bits; [`DrawError`] for anything that draws
 //! - [`demo`]: the scenes the examples, tests and firmware share (demo and classic)
 //! - an independent f64 model of the same maths is a crate of its own, `fixray-reference`
 //!   (the `reference/` folder), which sees only this public API
@@ -80,7 +82,7 @@ mod scene;
 #[cfg(test)]
 mod xorshift;
 
-pub use draw::{DrawError, FromRgb, Viewport};
+pub use draw::{DrawError, FromRgb, Picture, Viewport};
 pub use error::Error;
 pub use framebuffer::Framebuffer;
 pub use geometry::{Hit, Plane, Ray, Shape, Sphere};

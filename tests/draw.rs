@@ -5,7 +5,10 @@ use core::convert::Infallible;
 
 use embedded_graphics::image::Image;
 use embedded_graphics::mock_display::MockDisplay;
-use embedded_graphics::pixelcolor::{BinaryColor, Gray2, Gray4, Gray8, Rgb565, Rgb888};
+use embedded_graphics::pixelcolor::{
+    Bgr555, Bgr565, Bgr666, Bgr888, BinaryColor, Gray2, Gray4, Gray8, Rgb555, Rgb565, Rgb666,
+    Rgb888,
+};
 use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::{PrimitiveStyle, Rectangle};
 use fixray::{
@@ -94,7 +97,7 @@ fn streamed_equals_framebuffer<C: FromRgb + core::fmt::Debug>(buffer_rows: usize
     let (scene, camera, frame) = demo_frame();
     let origin = Point::new(7, 11);
     let mut display = Recorder::<C>::new(53, 47);
-    let view = Viewport::new(&scene, &camera, Rectangle::new(origin, Size::new(40, 30))).unwrap();
+    let view = Viewport::at(&scene, &camera, origin);
     let mut buffer = vec![Rgb::BLACK; usize::from(COLS) * buffer_rows];
     view.render(&mut buffer, &mut display).unwrap();
     assert!(display.faults.is_empty(), "{:?}", display.faults);
@@ -135,14 +138,19 @@ fn streamed_render_equals_framebuffer_render_in_every_format() {
         streamed_equals_framebuffer::<Gray4>(rows);
         streamed_equals_framebuffer::<Gray2>(rows);
         streamed_equals_framebuffer::<BinaryColor>(rows);
+        streamed_equals_framebuffer::<Bgr888>(rows);
+        streamed_equals_framebuffer::<Bgr565>(rows);
+        streamed_equals_framebuffer::<Rgb555>(rows);
+        streamed_equals_framebuffer::<Bgr555>(rows);
+        streamed_equals_framebuffer::<Rgb666>(rows);
+        streamed_equals_framebuffer::<Bgr666>(rows);
     }
 }
 
 #[test]
 fn rgb888_is_the_shaded_colour_and_rgb565_rounds_each_channel() {
     let (scene, camera, frame) = demo_frame();
-    let full = Rectangle::new(Point::zero(), Size::new(40, 30));
-    let view = Viewport::new(&scene, &camera, full).unwrap();
+    let view = Viewport::at(&scene, &camera, Point::zero());
     let mut row = [Rgb::BLACK; 40];
     let mut exact = Recorder::<Rgb888>::new(40, 30);
     view.render(&mut row, &mut exact).unwrap();
@@ -178,8 +186,7 @@ fn a_sphere_straight_ahead_matches_the_ascii_art() {
     let camera = Camera::pinhole(16.0, 16.0, 8.0, 16, 16).unwrap();
 
     let mut display = MockDisplay::<BinaryColor>::new();
-    let area = Rectangle::new(Point::new(3, 2), Size::new(16, 16));
-    let view = Viewport::new(&scene, &camera, area).unwrap();
+    let view = Viewport::at(&scene, &camera, Point::new(3, 2));
     let mut row = [Rgb::BLACK; 16];
     view.render(&mut row, &mut display).unwrap();
 
@@ -250,12 +257,7 @@ impl DrawTarget for Flaky {
 #[test]
 fn a_failing_display_hands_its_error_back_and_stops() {
     let (scene, camera) = (demo::scene(), demo::camera(COLS, ROWS).unwrap());
-    let view = Viewport::new(
-        &scene,
-        &camera,
-        Rectangle::new(Point::zero(), Size::new(40, 30)),
-    )
-    .unwrap();
+    let view = Viewport::at(&scene, &camera, Point::zero());
     let mut row = [Rgb::BLACK; 40];
     for fail_on in [0, 1, 17, 29] {
         let mut display = Flaky { calls: 0, fail_on };
@@ -273,7 +275,10 @@ fn a_failing_display_hands_its_error_back_and_stops() {
         calls: 0,
         fail_on: 0,
     };
-    assert_eq!(frame.draw_at(Point::zero(), &mut display), Err(BusError(0)));
+    assert_eq!(
+        frame.draw_at(Point::zero(), &mut display),
+        Err(DrawError::Display(BusError(0)))
+    );
 }
 
 #[test]
@@ -306,21 +311,26 @@ fn refused_requests_are_errors_and_draw_nothing() {
         .is_ok()
     );
 
-    let view = Viewport::new(
-        &scene,
-        &camera,
-        Rectangle::new(Point::zero(), Size::new(40, 30)),
-    )
-    .unwrap();
+    let view = Viewport::at(&scene, &camera, Point::zero());
     let mut display = Flaky {
         calls: 0,
         fail_on: usize::MAX,
     };
     let mut row = [Rgb::BLACK; 40];
-    // Rows past the bottom of the picture.
+    // Rows past the bottom of the picture: the last one asked for is named.
     assert_eq!(
         view.render_rows(25..31, &mut row, &mut display),
-        Err(DrawError::Render(mismatch((40, 31))))
+        Err(DrawError::Render(Error::RowOutOfRange {
+            row: 30,
+            rows: 30
+        }))
+    );
+    assert_eq!(
+        view.render_rows(0..u16::MAX, &mut row, &mut display),
+        Err(DrawError::Render(Error::RowOutOfRange {
+            row: u16::MAX - 1,
+            rows: 30
+        }))
     );
     // A buffer shorter than one row.
     assert_eq!(
@@ -335,12 +345,7 @@ fn refused_requests_are_errors_and_draw_nothing() {
 #[test]
 fn bands_cover_every_row_once_and_can_be_interleaved() {
     let (scene, camera, frame) = demo_frame();
-    let view = Viewport::new(
-        &scene,
-        &camera,
-        Rectangle::new(Point::zero(), Size::new(40, 30)),
-    )
-    .unwrap();
+    let view = Viewport::at(&scene, &camera, Point::zero());
     for height in [0, 1, 7, 30, 31, u16::MAX] {
         let bands: Vec<_> = view.bands(height).collect();
         assert_eq!(bands.len(), view.bands(height).len());
@@ -414,4 +419,209 @@ fn the_framebuffer_is_an_image_and_a_draw_target() {
         let expected = Rgb888::from(frame.pixel(10 + x as usize, 20 + y as usize).unwrap());
         assert_eq!(part.get(x, y), Some(expected));
     }
+}
+
+/// The display pixels a `cols × rows` demo picture at `top_left` must set on a `w × h`
+/// display: each pixel of the framebuffer render whose display point lies on the display,
+/// converted there. Worked out from the frame alone, with no clipping code.
+fn expected_on_display<C: FromRgb, const W: usize, const H: usize>(
+    frame: &Framebuffer<W, H>,
+    top_left: Point,
+    (w, h): (i32, i32),
+) -> Vec<Option<C>> {
+    let mut pixels = vec![None; (w * h) as usize];
+    for (y, line) in frame.rows().iter().enumerate() {
+        for (x, &c) in line.iter().enumerate() {
+            // In i64: a picture near the ends of i32 has points past them, on no display.
+            let (dx, dy) = (
+                i64::from(top_left.x) + x as i64,
+                i64::from(top_left.y) + y as i64,
+            );
+            if (0..i64::from(w)).contains(&dx) && (0..i64::from(h)).contains(&dy) {
+                let at = Point::new(dx as i32, dy as i32);
+                pixels[(at.y * w + at.x) as usize] = Some(C::from_rgb(c, at));
+            }
+        }
+    }
+    pixels
+}
+
+/// Places on a 48 × 32 display that leave the 40 × 30 demo partly off it on each side and
+/// corner, wholly off it, or wholly on it.
+const PLACES: [Point; 13] = [
+    Point::new(-7, 0),
+    Point::new(15, 1),
+    Point::new(4, -11),
+    Point::new(3, 20),
+    Point::new(-39, -29),
+    Point::new(47, 31),
+    Point::new(-20, 10),
+    Point::new(30, -25),
+    Point::new(4, 1),
+    Point::new(-40, 0),
+    Point::new(0, 32),
+    Point::new(48, -30),
+    Point::new(i32::MIN, i32::MAX),
+];
+
+#[test]
+fn a_viewport_partly_off_the_display_draws_only_what_shows() {
+    let (scene, camera, frame) = demo_frame();
+    for at in PLACES {
+        for band_rows in [1, 7, 30] {
+            let view = Viewport::at(&scene, &camera, at);
+            let mut display = Recorder::<Gray4>::new(48, 32);
+            let mut buffer = vec![Rgb::BLACK; 40 * band_rows];
+            view.render(&mut buffer, &mut display).unwrap();
+            assert!(display.faults.is_empty(), "{at:?}: {:?}", display.faults);
+            assert_eq!(
+                display.pixels,
+                expected_on_display::<Gray4, 40, 30>(&frame, at, (48, 32)),
+                "{at:?}, bands of {band_rows}"
+            );
+            // Every call is a band of visible rows cut to the visible columns: no call holds
+            // a row or a column off the display, and no two calls overlap.
+            let shown = display.pixels.iter().flatten().count() as u32;
+            let sent: u32 = display
+                .calls
+                .iter()
+                .map(|a| a.size.width * a.size.height)
+                .sum();
+            assert_eq!(sent, shown, "{at:?}");
+            assert!(
+                display
+                    .calls
+                    .iter()
+                    .all(|a| a.size.height as usize <= band_rows)
+            );
+        }
+    }
+}
+
+#[test]
+fn a_framebuffer_partly_off_the_display_draws_only_what_shows() {
+    let (_, _, frame) = demo_frame();
+    for at in PLACES {
+        let mut display = Recorder::<BinaryColor>::new(48, 32);
+        frame.draw_at(at, &mut display).unwrap();
+        assert!(display.faults.is_empty(), "{at:?}: {:?}", display.faults);
+        assert!(display.calls.len() <= 1);
+        assert_eq!(
+            display.pixels,
+            expected_on_display::<BinaryColor, 40, 30>(&frame, at, (48, 32)),
+            "{at:?}"
+        );
+    }
+}
+
+#[test]
+fn a_picture_draws_what_the_viewport_renders() {
+    let (scene, camera, frame) = demo_frame();
+    for at in PLACES {
+        let picture = Viewport::at(&scene, &camera, at)
+            .picture::<Rgb565, 40>()
+            .unwrap();
+        let mut display = Recorder::<Rgb565>::new(48, 32);
+        picture.draw(&mut display).unwrap();
+        assert!(display.faults.is_empty(), "{at:?}: {:?}", display.faults);
+        assert_eq!(
+            display.pixels,
+            expected_on_display::<Rgb565, 40, 30>(&frame, at, (48, 32)),
+            "{at:?}"
+        );
+        // One call per visible row: a one-row buffer.
+        assert!(display.calls.iter().all(|a| a.size.height == 1));
+        assert_eq!(
+            picture.bounding_box(),
+            Rectangle::new(at, Size::new(40, 30))
+        );
+    }
+    // A buffer wider than the camera works the same; a narrower one is refused when the
+    // picture is made, naming the camera and the buffer.
+    let wide = Viewport::at(&scene, &camera, Point::zero()).picture::<Rgb888, 320>();
+    let mut display = Recorder::<Rgb888>::new(40, 30);
+    wide.unwrap().draw(&mut display).unwrap();
+    assert_eq!(
+        display.pixels,
+        expected_on_display::<Rgb888, 40, 30>(&frame, Point::zero(), (40, 30))
+    );
+    let narrow = Viewport::at(&scene, &camera, Point::zero()).picture::<Rgb888, 39>();
+    assert_eq!(
+        narrow.err(),
+        Some(Error::SizeMismatch {
+            camera: (40, 30),
+            target: (39, 1)
+        })
+    );
+}
+
+#[test]
+fn a_picture_hands_the_driver_error_back_unchanged() {
+    let (scene, camera) = (demo::scene(), demo::camera(COLS, ROWS).unwrap());
+    let picture = Viewport::at(&scene, &camera, Point::zero())
+        .picture::<Rgb565, 40>()
+        .unwrap();
+    for fail_on in [0, 5, 29] {
+        let mut display = Flaky { calls: 0, fail_on };
+        assert_eq!(picture.draw(&mut display), Err(BusError(fail_on)));
+        assert_eq!(
+            display.calls,
+            fail_on + 1,
+            "no row is sent after the failure"
+        );
+    }
+}
+
+#[test]
+fn new_and_at_place_the_same_picture() {
+    let (scene, camera) = (demo::scene(), demo::camera(COLS, ROWS).unwrap());
+    let corner = Point::new(-3, 9);
+    let area = Rectangle::new(corner, Size::new(40, 30));
+    let new = Viewport::new(&scene, &camera, area).unwrap();
+    let at = Viewport::at(&scene, &camera, corner);
+    assert_eq!((new.top_left(), new.area()), (corner, area));
+    assert_eq!(
+        (at.top_left(), at.area(), at.size()),
+        (corner, area, area.size)
+    );
+    assert_eq!(at.bounding_box(), area);
+    // The display's own bounding box, the natural thing to try, is refused by `new` when
+    // its size is not the camera's; `at` takes only the corner.
+    let display = Recorder::<Rgb888>::new(53, 47);
+    assert_eq!(
+        Viewport::new(&scene, &camera, display.bounding_box()).err(),
+        Some(Error::SizeMismatch {
+            camera: (40, 30),
+            target: (53, 47)
+        })
+    );
+}
+
+#[test]
+fn draw_errors_say_which_side_failed() {
+    let refused: DrawError<BusError> = Error::RowOutOfRange { row: 30, rows: 30 }.into();
+    assert_eq!(
+        refused.to_string(),
+        "row 30 is outside the picture's 30 rows"
+    );
+    let source = core::error::Error::source(&refused).map(|e| e.to_string());
+    assert_eq!(
+        source.as_deref(),
+        Some("row 30 is outside the picture's 30 rows")
+    );
+    let driver: DrawError<BusError> = DrawError::Display(BusError(7));
+    assert_eq!(driver.to_string(), "display driver error: BusError(7)");
+    assert!(core::error::Error::source(&driver).is_none());
+    // One error type for every call that draws, so `?` joins them.
+    fn both(display: &mut Flaky) -> Result<(), DrawError<BusError>> {
+        let (scene, camera, frame) = demo_frame();
+        frame.draw_at(Point::zero(), display)?;
+        Viewport::at(&scene, &camera, Point::zero()).render(&mut [Rgb::BLACK; 40], display)?;
+        Ok(())
+    }
+    let mut display = Flaky {
+        calls: 0,
+        fail_on: 1,
+    };
+    assert_eq!(both(&mut display), Err(DrawError::Display(BusError(1))));
 }

@@ -8,8 +8,7 @@ use embedded_graphics::pixelcolor::{BinaryColor, Gray8, Rgb565, Rgb888};
 use embedded_graphics::prelude::{Point, RgbColor};
 use fixray::{Framebuffer, FromRgb, demo, render};
 
-/// `cargo run --example simulator -- ARGS`, in this test's own profile and features so
-/// nothing is rebuilt.
+/// `cargo run --example simulator -- ARGS`, in this test's own profile so nothing is rebuilt.
 fn simulator(args: &[&str]) -> Output {
     let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
     let mut command = Command::new(cargo);
@@ -23,9 +22,6 @@ fn simulator(args: &[&str]) -> Output {
     command.arg(Path::new(env!("CARGO_MANIFEST_DIR")).join("Cargo.toml"));
     if !cfg!(debug_assertions) {
         command.arg("--release");
-    }
-    if cfg!(feature = "window") {
-        command.args(["--features", "window"]);
     }
     command.arg("--").args(args);
     command.output().expect("cargo runs")

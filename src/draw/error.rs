@@ -5,7 +5,8 @@ use core::fmt;
 use crate::error::Error;
 
 /// Why drawing on a display stopped: fixray refused the request, or the display driver
-/// returned an error, which is handed back unchanged.
+/// returned an error, which is handed back unchanged. Every fixray call that draws on a
+/// display returns it; it converts from [`Error`], so `?` joins set-up and drawing.
 ///
 /// `E` is the driver's [`DrawTarget::Error`](embedded_graphics::draw_target::DrawTarget::Error).
 /// Rows already sent before the failure stay on the display; nothing is retried.
@@ -19,8 +20,8 @@ use crate::error::Error;
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum DrawError<E> {
-    /// fixray refused the request: a viewport that does not match the camera, rows outside
-    /// the picture, a row buffer shorter than a row.
+    /// fixray refused the request: rows outside the picture, a row buffer shorter than a
+    /// row.
     Render(Error),
     /// The display driver's own error, as it returned it.
     Display(E),

@@ -14,7 +14,9 @@ use embedded_graphics::pixelcolor::Rgb888;
 use embedded_graphics::prelude::{Dimensions, OriginDimensions, Pixel, Point, Size};
 use embedded_graphics::primitives::Rectangle;
 
+use super::clip::visible;
 use super::color::{FromRgb, converted};
+use super::error::DrawError;
 use crate::framebuffer::Framebuffer;
 
 /// `W` or `H` as an embedded-graphics dimension; no frame that fits in memory is wider.
@@ -102,9 +104,11 @@ impl<const W: usize, const H: usize> Framebuffer<W, H> {
     /// Draws the frame with its top left pixel at display point `top_left`, converted to the
     /// display's colour by [`FromRgb`], in one `fill_contiguous` call.
     ///
-    /// For dithered colours the pattern is keyed on display points, so this draws exactly the
-    /// pixels a streamed [`Viewport`](crate::Viewport) render of the same picture would.
-    /// A frame placed so that its far corner would lie past `i32::MAX` draws nothing.
+    /// Only the part on the display's bounding box is sent; any point will do, and a frame
+    /// wholly off the display draws nothing. For dithered colours the pattern is keyed on
+    /// display points, so this draws exactly the pixels a streamed
+    /// [`Viewport`](crate::Viewport) render of the same picture would. A driver error comes
+    /// back as [`DrawError::Display`], unchanged; fixray refuses nothing here.
     ///
     /// ```
     /// use embedded_graphics::{pixelcolor::BinaryColor, prelude::*};
@@ -113,23 +117,38 @@ impl<const W: usize, const H: usize> Framebuffer<W, H> {
     /// let mut frame = Framebuffer::<8, 8>::new();
     /// frame.rows_mut()[0] = [Rgb::WHITE; 8];
     /// let mut oled = SimulatorDisplay::<BinaryColor>::new(Size::new(128, 64));
-    /// frame.draw_at(Point::new(10, 20), &mut oled).unwrap();
+    /// frame.draw_at(Point::new(10, 20), &mut oled)?;
     /// assert_eq!(oled.get_pixel(Point::new(17, 20)), BinaryColor::On);
     /// assert_eq!(oled.get_pixel(Point::new(17, 21)), BinaryColor::Off);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
-    pub fn draw_at<D>(&self, top_left: Point, display: &mut D) -> Result<(), D::Error>
+    pub fn draw_at<D>(&self, top_left: Point, display: &mut D) -> Result<(), DrawError<D::Error>>
     where
         D: DrawTarget,
         D::Color: FromRgb,
     {
         let size = OriginDimensions::size(self);
-        let fits = top_left.x.checked_add_unsigned(size.width).is_some()
-            && top_left.y.checked_add_unsigned(size.height).is_some();
-        if !fits {
+        let (cols, rows) = visible(top_left, size, &display.bounding_box());
+        if cols.is_empty() || rows.is_empty() {
             return Ok(());
         }
-        let area = Rectangle::new(top_left, size);
-        let lines = self.rows().iter().map(|line| line.as_slice());
-        display.fill_contiguous(&area, converted::<D::Color>(lines, top_left))
+        // On the display and below i32::MAX (`visible` keeps only such pixels), and within
+        // the frame, whose sides are below i32::MAX too.
+        let corner = Point::new(
+            top_left.x.wrapping_add(cols.start as i32),
+            top_left.y.wrapping_add(rows.start as i32),
+        );
+        let area = Rectangle::new(corner, Size::new(cols.len() as u32, rows.len() as u32));
+        let span = cols.start as usize..cols.end as usize;
+        // `get` never misses (the ranges lie within the frame); it stands in for an index.
+        let lines = self
+            .rows()
+            .get(rows.start as usize..rows.end as usize)
+            .unwrap_or_default()
+            .iter()
+            .map(|line| line.get(span.clone()).unwrap_or_default());
+        display
+            .fill_contiguous(&area, converted::<D::Color>(lines, corner))
+            .map_err(DrawError::Display)
     }
 }

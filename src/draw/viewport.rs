@@ -1,38 +1,47 @@
-//! [`Viewport`]: a scene rendered straight into a display rectangle, band by band.
+//! [`Viewport`]: a scene rendered straight onto a display at a point, band by band, clipped
+//! to the display.
 
 use core::iter::FusedIterator;
+use core::marker::PhantomData;
 use core::ops::Range;
 
 use embedded_graphics::draw_target::DrawTarget;
-use embedded_graphics::prelude::{Point, Size};
+use embedded_graphics::prelude::{Dimensions, Point, Size};
 use embedded_graphics::primitives::Rectangle;
 
+use super::clip::visible;
 use super::color::{FromRgb, converted};
 use super::error::DrawError;
+use super::picture::Picture;
 use crate::error::Error;
 use crate::render::camera::Camera;
 use crate::render::rows::render_row;
 use crate::scene::Scene;
 use crate::scene::colour::Rgb;
 
-/// A scene seen through a camera, placed on a rectangle of a display.
+/// A scene seen through a camera, placed on a display with its top left pixel at a point.
 ///
-/// It renders rows with [`render_row`] into a buffer the caller supplies and pushes them with
-/// one [`fill_contiguous`](DrawTarget::fill_contiguous) per band, so no frame is ever held:
-/// the buffer is the renderer's RAM. Its length picks the band height: a buffer of `k` rows
-/// sends `k` rows per call, and one row is enough.
+/// The picture is the camera's size. It renders rows with [`render_row`] into a buffer the
+/// caller supplies and pushes them with one [`fill_contiguous`](DrawTarget::fill_contiguous)
+/// per band, so no frame is ever held: the buffer is the renderer's RAM. Its length picks the
+/// band height: a buffer of `k` rows sends `k` rows per call, and one row is enough. For a
+/// one-call draw with a buffer of its own, see [`Viewport::picture`].
 ///
-/// The rectangle's size must equal the camera's; the rest of the display is left alone.
+/// The picture is clipped to the display's
+/// [`bounding_box`](embedded_graphics::prelude::Dimensions::bounding_box): rows off the display
+/// are never traced, and only the visible columns are sent. `render_row` traces whole rows,
+/// so a row that shows is traced across the camera's full width even when only part of it is
+/// on the display. The rest of the display is left alone.
 ///
 /// ```
-/// use embedded_graphics::{pixelcolor::Rgb565, prelude::*, primitives::Rectangle};
+/// use embedded_graphics::{pixelcolor::Rgb565, prelude::*};
 /// use embedded_graphics_simulator::SimulatorDisplay;
 /// use fixray::{demo, FromRgb, Rgb, Viewport};
 ///
 /// let mut display = SimulatorDisplay::<Rgb565>::new(Size::new(128, 96));
 /// let (scene, camera) = (demo::scene(), demo::camera(64, 48)?);
 /// // The lower right quarter of the display, drawn 16 rows at a time.
-/// let view = Viewport::new(&scene, &camera, Rectangle::new(Point::new(64, 48), Size::new(64, 48)))?;
+/// let view = Viewport::at(&scene, &camera, Point::new(64, 48));
 /// let mut band = [Rgb::BLACK; 64 * 16];
 /// for rows in view.bands(16) {
 ///     view.render_rows(rows, &mut band, &mut display)?;
@@ -47,14 +56,29 @@ use crate::scene::colour::Rgb;
 pub struct Viewport<'a, const N: usize, const L: usize = 4> {
     scene: &'a Scene<N, L>,
     camera: &'a Camera,
-    area: Rectangle,
+    top_left: Point,
 }
 
 impl<'a, const N: usize, const L: usize> Viewport<'a, N, L> {
-    /// Places the camera's picture on `area` of a display.
+    /// Places the camera's picture on a display with its top left pixel at `top_left`.
     ///
-    /// `area` must be exactly `camera.cols() × camera.rows()` pixels, and its far corner must
-    /// be a representable display point; otherwise this is an error.
+    /// Any point will do: the part of the picture off the display, on any side, is clipped
+    /// when drawing, and a picture wholly off it draws nothing.
+    #[must_use]
+    pub const fn at(scene: &'a Scene<N, L>, camera: &'a Camera, top_left: Point) -> Self {
+        Viewport {
+            scene,
+            camera,
+            top_left,
+        }
+    }
+
+    /// Places the camera's picture on `area` of a display, for code that holds the rectangle;
+    /// [`Viewport::at`] needs only its corner.
+    ///
+    /// `area` must be exactly `camera.cols() × camera.rows()` pixels
+    /// ([`Error::SizeMismatch`] otherwise), and its far corner must be a representable
+    /// display point ([`Error::OutOfRange`] otherwise).
     pub fn new(scene: &'a Scene<N, L>, camera: &'a Camera, area: Rectangle) -> Result<Self, Error> {
         let (cols, rows) = (camera.cols(), camera.rows());
         if area.size != Size::new(cols.into(), rows.into()) {
@@ -72,24 +96,36 @@ impl<'a, const N: usize, const L: usize> Viewport<'a, N, L> {
                 range: "display points whose far corner fits in i32",
             });
         }
-        Ok(Viewport {
-            scene,
-            camera,
-            area,
-        })
+        Ok(Viewport::at(scene, camera, area.top_left))
     }
 
-    /// The display rectangle the picture fills.
+    /// The display point of the picture's top left pixel.
     #[must_use]
-    pub const fn area(&self) -> Rectangle {
-        self.area
+    pub const fn top_left(&self) -> Point {
+        self.top_left
     }
 
-    /// Renders rows `rows` of the picture (0 is the viewport's top row) onto `display`.
+    /// The picture's size, the camera's: columns by rows.
+    #[must_use]
+    pub fn size(&self) -> Size {
+        Size::new(self.camera.cols().into(), self.camera.rows().into())
+    }
+
+    /// The display rectangle the picture covers, on the display or not.
+    #[must_use]
+    pub fn area(&self) -> Rectangle {
+        Rectangle::new(self.top_left, self.size())
+    }
+
+    /// Renders rows `rows` of the picture (0 is the picture's top row) onto `display`,
+    /// clipped to the display.
     ///
-    /// `buffer` must hold at least one row (`camera.cols()` pixels); each
-    /// `fill_contiguous` call sends as many whole rows as it holds. Rows past the picture's
-    /// last are an error, and an empty range draws nothing. The first driver error stops the
+    /// `buffer` must hold at least one row (`camera.cols()` pixels, even when fewer columns
+    /// show); each `fill_contiguous` call sends as many rows as it holds, each cut to its
+    /// visible columns. Rows off the display are skipped before they are traced. Rows past the
+    /// picture's last are an error ([`Error::RowOutOfRange`], the last row asked for), a
+    /// buffer shorter than a row is one too ([`Error::SizeMismatch`], the buffer's length as
+    /// a width of one row), and an empty range draws nothing. The first driver error stops the
     /// render and is returned as [`DrawError::Display`], unchanged.
     pub fn render_rows<D>(
         &self,
@@ -101,11 +137,96 @@ impl<'a, const N: usize, const L: usize> Viewport<'a, N, L> {
         D: DrawTarget,
         D::Color: FromRgb,
     {
+        self.draw_rows(rows, buffer, display, |row, line| {
+            render_row(self.scene, self.camera, row, line)
+        })
+    }
+
+    /// Renders the whole picture: [`render_rows`](Self::render_rows) over every row.
+    pub fn render<D>(&self, buffer: &mut [Rgb], display: &mut D) -> Result<(), DrawError<D::Error>>
+    where
+        D: DrawTarget,
+        D::Color: FromRgb,
+    {
+        self.render_rows(0..self.camera.rows(), buffer, display)
+    }
+
+    /// The picture as an embedded-graphics [`Drawable`](embedded_graphics::Drawable) in
+    /// display colour `C`, with a row buffer of its own, `W` pixels wide (on the stack while it
+    /// draws: `3 · W` bytes).
+    ///
+    /// A camera wider than `W` columns is [`Error::SizeMismatch`]; the check is here, so that
+    /// drawing can fail only in the driver.
+    ///
+    /// ```
+    /// use embedded_graphics::{pixelcolor::Rgb565, prelude::*};
+    /// use embedded_graphics_simulator::SimulatorDisplay;
+    /// use fixray::{demo, FromRgb, Viewport};
+    ///
+    /// let mut display = SimulatorDisplay::<Rgb565>::new(Size::new(320, 240));
+    /// let (scene, camera) = (demo::scene(), demo::camera(400, 300)?);
+    /// // Larger than the display: only the 320 × 240 pixels that show are traced.
+    /// Viewport::at(&scene, &camera, Point::zero())
+    ///     .picture::<Rgb565, 400>()?
+    ///     .draw(&mut display)?;
+    /// let sky = Rgb565::from_rgb(demo::BACKGROUND, Point::zero());
+    /// assert_eq!(display.get_pixel(Point::new(319, 0)), sky);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn picture<C: FromRgb, const W: usize>(&self) -> Result<Picture<'a, C, W, N, L>, Error> {
+        let cols = self.camera.cols();
+        if usize::from(cols) > W {
+            return Err(Error::SizeMismatch {
+                camera: (cols, self.camera.rows()),
+                // W < cols ≤ u16::MAX.
+                target: (W as u16, 1),
+            });
+        }
+        Ok(Picture {
+            view: *self,
+            colour: PhantomData,
+        })
+    }
+
+    /// The picture's rows in bands of `rows_per_band` (the last may be shorter), for callers
+    /// that do other work between bands. A band height of 0 counts as 1.
+    ///
+    /// ```
+    /// use fixray::{demo, Viewport};
+    /// use embedded_graphics::prelude::*;
+    /// let (scene, camera) = (demo::scene(), demo::camera(16, 10)?);
+    /// let view = Viewport::at(&scene, &camera, Point::zero());
+    /// assert_eq!(view.bands(4).collect::<Vec<_>>(), [0..4, 4..8, 8..10]);
+    /// # Ok::<(), fixray::Error>(())
+    /// ```
+    #[must_use]
+    pub fn bands(&self, rows_per_band: u16) -> Bands {
+        Bands {
+            next: 0,
+            end: self.camera.rows(),
+            step: rows_per_band.max(1),
+        }
+    }
+
+    /// [`render_rows`](Self::render_rows) with the row tracer `trace(row, line)` as a
+    /// parameter, so the crate's tests can count which rows are traced.
+    pub(crate) fn draw_rows<D, T>(
+        &self,
+        rows: Range<u16>,
+        buffer: &mut [Rgb],
+        display: &mut D,
+        mut trace: T,
+    ) -> Result<(), DrawError<D::Error>>
+    where
+        D: DrawTarget,
+        D::Color: FromRgb,
+        T: FnMut(u16, &mut [Rgb]) -> Result<(), Error>,
+    {
         let (cols, total) = (self.camera.cols(), self.camera.rows());
         if rows.end > total {
-            return Err(Error::SizeMismatch {
-                camera: (cols, total),
-                target: (cols, rows.end),
+            return Err(Error::RowOutOfRange {
+                row: rows.end - 1,
+                rows: total,
             }
             .into());
         }
@@ -124,17 +245,32 @@ impl<'a, const N: usize, const L: usize> Viewport<'a, N, L> {
             }
             .into());
         }
-        let mut row = rows.start;
-        while row < rows.end {
+        // Within the camera's columns and rows, so both fit u16.
+        let (shown_cols, shown_rows) = visible(self.top_left, self.size(), &display.bounding_box());
+        let span = shown_cols.start as usize..shown_cols.end as usize;
+        let mut row = rows.start.max(shown_rows.start as u16);
+        let end = rows.end.min(shown_rows.end as u16);
+        if span.is_empty() {
+            return Ok(());
+        }
+        while row < end {
             // band_rows ≤ total, a u16.
-            let n = (band_rows as u16).min(rows.end - row);
+            let n = (band_rows as u16).min(end - row);
             for (line, r) in buffer.chunks_exact_mut(width).zip(row..row + n) {
-                render_row(self.scene, self.camera, r, line)?;
+                trace(r, line)?;
             }
-            // Inside i32: `new` checked the viewport's far corner.
-            let top_left = self.area.top_left + Point::new(0, row.into());
-            let area = Rectangle::new(top_left, Size::new(cols.into(), n.into()));
-            let lines = buffer.chunks_exact(width).take(n.into());
+            // `span` lies within the row (`visible` keeps it within the camera's columns), so
+            // `get` never comes back empty; it stands in for a slice index that could panic.
+            // On the display, below i32::MAX: `visible` keeps only such pixels.
+            let top_left = Point::new(
+                self.top_left.x.wrapping_add(shown_cols.start as i32),
+                self.top_left.y.wrapping_add(i32::from(row)),
+            );
+            let area = Rectangle::new(top_left, Size::new(span.len() as u32, n.into()));
+            let lines = buffer
+                .chunks_exact(width)
+                .take(n.into())
+                .map(|line| line.get(span.clone()).unwrap_or_default());
             display
                 .fill_contiguous(&area, converted(lines, top_left))
                 .map_err(DrawError::Display)?;
@@ -142,34 +278,12 @@ impl<'a, const N: usize, const L: usize> Viewport<'a, N, L> {
         }
         Ok(())
     }
+}
 
-    /// Renders the whole picture: [`render_rows`](Self::render_rows) over every row.
-    pub fn render<D>(&self, buffer: &mut [Rgb], display: &mut D) -> Result<(), DrawError<D::Error>>
-    where
-        D: DrawTarget,
-        D::Color: FromRgb,
-    {
-        self.render_rows(0..self.camera.rows(), buffer, display)
-    }
-
-    /// The picture's rows in bands of `rows_per_band` (the last may be shorter), for callers
-    /// that do other work between bands. A band height of 0 counts as 1.
-    ///
-    /// ```
-    /// use fixray::{demo, Viewport};
-    /// use embedded_graphics::{prelude::*, primitives::Rectangle};
-    /// let (scene, camera) = (demo::scene(), demo::camera(16, 10)?);
-    /// let view = Viewport::new(&scene, &camera, Rectangle::new(Point::zero(), Size::new(16, 10)))?;
-    /// assert_eq!(view.bands(4).collect::<Vec<_>>(), [0..4, 4..8, 8..10]);
-    /// # Ok::<(), fixray::Error>(())
-    /// ```
-    #[must_use]
-    pub fn bands(&self, rows_per_band: u16) -> Bands {
-        Bands {
-            next: 0,
-            end: self.camera.rows(),
-            step: rows_per_band.max(1),
-        }
+impl<const N: usize, const L: usize> Dimensions for Viewport<'_, N, L> {
+    /// The display rectangle the picture covers: [`Viewport::area`].
+    fn bounding_box(&self) -> Rectangle {
+        self.area()
     }
 }
 
@@ -202,3 +316,107 @@ impl Iterator for Bands {
 impl ExactSizeIterator for Bands {}
 
 impl FusedIterator for Bands {}
+
+#[cfg(test)]
+mod tests {
+    use core::convert::Infallible;
+
+    use embedded_graphics::pixelcolor::Rgb888;
+    use embedded_graphics::prelude::{OriginDimensions, Pixel};
+
+    use super::*;
+    use crate::demo;
+
+    /// A display that counts the pixels it is sent and the ones that land outside it.
+    struct Counter {
+        size: Size,
+        drawn: usize,
+        outside: usize,
+    }
+
+    impl OriginDimensions for Counter {
+        fn size(&self) -> Size {
+            self.size
+        }
+    }
+
+    impl DrawTarget for Counter {
+        type Color = Rgb888;
+        type Error = Infallible;
+
+        fn draw_iter<I: IntoIterator<Item = Pixel<Rgb888>>>(
+            &mut self,
+            pixels: I,
+        ) -> Result<(), Infallible> {
+            for Pixel(at, _) in pixels {
+                self.drawn += 1;
+                self.outside += usize::from(!self.bounding_box().contains(at));
+            }
+            Ok(())
+        }
+    }
+
+    /// Draws a `cols × rows` demo picture at `top_left` on a `display`-sized display through
+    /// the viewport's own row loop, with the real tracer behind a counter: (rows traced,
+    /// pixels traced, pixels drawn, pixels drawn outside).
+    fn traced(
+        cols: u16,
+        rows: u16,
+        top_left: Point,
+        display: Size,
+    ) -> (usize, usize, usize, usize) {
+        let (scene, camera) = (demo::scene(), demo::camera(cols, rows).unwrap());
+        let view = Viewport::at(&scene, &camera, top_left);
+        let mut counter = Counter {
+            size: display,
+            drawn: 0,
+            outside: 0,
+        };
+        let mut buffer = [Rgb::BLACK; 512 * 4];
+        let buffer = &mut buffer[..usize::from(cols) * 4];
+        let (mut traced_rows, mut traced_pixels) = (0, 0);
+        view.draw_rows(0..rows, buffer, &mut counter, |row, line| {
+            traced_rows += 1;
+            traced_pixels += line.len();
+            render_row(&scene, &camera, row, line)
+        })
+        .unwrap();
+        (traced_rows, traced_pixels, counter.drawn, counter.outside)
+    }
+
+    #[test]
+    fn a_picture_larger_than_the_display_traces_only_the_rows_that_show() {
+        // 400 × 300 on 320 × 240: 240 rows traced (whole, 400 pixels each: 96 000 rather
+        // than 120 000), 76 800 pixels drawn, none outside.
+        assert_eq!(
+            traced(400, 300, Point::zero(), Size::new(320, 240)),
+            (240, 96_000, 76_800, 0)
+        );
+    }
+
+    #[test]
+    fn every_side_off_the_display_is_cut_before_tracing() {
+        let display = Size::new(48, 32);
+        // (top left, rows that show, columns that show) for a 40 × 30 picture.
+        for (at, rows, cols) in [
+            (Point::new(-10, 0), 30, 30),
+            (Point::new(20, 0), 30, 28),
+            (Point::new(0, -12), 18, 40),
+            (Point::new(0, 25), 7, 40),
+            (Point::new(-39, -29), 1, 1),
+            (Point::new(47, 31), 1, 1),
+            (Point::new(-40, 0), 0, 0),
+            (Point::new(0, 32), 0, 0),
+            (Point::new(i32::MIN, i32::MIN), 0, 0),
+            (Point::new(i32::MAX, i32::MAX), 0, 0),
+        ] {
+            let (traced_rows, traced_pixels, drawn, outside) = traced(40, 30, at, display);
+            // A picture with no column on the display traces nothing at all.
+            let expected_rows = if cols == 0 { 0 } else { rows };
+            assert_eq!(traced_rows, expected_rows, "{at:?}");
+            assert_eq!(traced_pixels, 40 * expected_rows, "{at:?}");
+            assert_eq!(drawn, rows * cols, "{at:?}");
+            assert_eq!(outside, 0, "{at:?}");
+        }
+    }
+}

@@ -1350,28 +1350,48 @@ pub fn check_viewport<const N: usize>(
     );
     assert!(viewport.render_rows(0..1, &mut [], &mut rgb).is_err());
     let _ = viewport.render_rows(rows..rows / 2, &mut buffer, &mut rgb); // a backwards range
+    // The viewport is clipped to each display's bounding box: a pixel is drawn exactly where
+    // its point lies on the display (and below i32::MAX, where embedded-graphics' corners
+    // still fit), converted at that point.
+    let on = |size: Size, x: i64, y: i64| {
+        let limit = |side: u32| i64::from(side).min(i64::from(i32::MAX));
+        (0..limit(size.width)).contains(&x) && (0..limit(size.height)).contains(&y)
+    };
+    let mut shown = [0usize; 3];
     for (row, line) in frame.iter().enumerate() {
         for (col, &c) in line.iter().enumerate() {
-            let at = top_left + Point::new(col as i32, row as i32);
-            assert_eq!(
-                rgb.pixels.get(&(at.x, at.y)),
-                Some(&Rgb888::from(c)),
-                "{at:?}"
-            );
-            let level = draw::dither(draw::luma(c), 255, at);
-            assert_eq!(
-                grey.pixels.get(&(at.x, at.y)),
-                Some(&Gray8::new(level)),
-                "{at:?}"
-            );
-            let on = BinaryColor::from(draw::dither(draw::luma(c), 1, at) == 1);
-            assert_eq!(bits.pixels.get(&(at.x, at.y)), Some(&on), "{at:?}");
+            let x = i64::from(top_left.x) + col as i64;
+            let y = i64::from(top_left.y) + row as i64;
+            // A point on any display fits i32; `at` is used only then.
+            let at = Point::new(x as i32, y as i32);
+            if on(rgb.size, x, y) {
+                shown[0] += 1;
+                assert_eq!(
+                    rgb.pixels.get(&(at.x, at.y)),
+                    Some(&Rgb888::from(c)),
+                    "{at:?}"
+                );
+            }
+            if on(grey.size, x, y) {
+                shown[1] += 1;
+                let level = draw::dither(draw::luma(c), 255, at);
+                assert_eq!(
+                    grey.pixels.get(&(at.x, at.y)),
+                    Some(&Gray8::new(level)),
+                    "{at:?}"
+                );
+            }
+            if on(bits.size, x, y) {
+                shown[2] += 1;
+                let lit = BinaryColor::from(draw::dither(draw::luma(c), 1, at) == 1);
+                assert_eq!(bits.pixels.get(&(at.x, at.y)), Some(&lit), "{at:?}");
+            }
         }
     }
     assert_eq!(
-        rgb.pixels.len(),
-        cols as usize * rows as usize,
-        "nothing outside the area"
+        [rgb.pixels.len(), grey.pixels.len(), bits.pixels.len()],
+        shown,
+        "nothing off the display or outside the area"
     );
     let _ = <Rgb565 as draw::FromRgb>::from_rgb(Rgb::WHITE, top_left);
 }
