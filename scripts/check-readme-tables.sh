@@ -8,7 +8,7 @@
 #                    firmware/target/firmware-tables.md (so run scripts/firmware.sh first:
 #                    QEMU runs once, and this reads what that run measured)
 #   accuracy-table   the accuracy table, printed by
-#                    cargo run --release --features reference --example accuracy -- --markdown
+#                    cargo run --release --example accuracy -- --markdown
 #
 # Usage: scripts/check-readme-tables.sh [--fix]
 #
@@ -34,7 +34,7 @@ fi
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cp "$firmware_tables" "$work/firmware-table"
-cargo run --quiet --release --features reference --example accuracy -- --markdown \
+cargo run --quiet --release --example accuracy -- --markdown \
     >"$work/accuracy-table"
 
 block() { # name: the README's lines between the name's markers
