@@ -4,6 +4,7 @@ use micromath::F32Ext;
 
 use crate::error::Error;
 use crate::fx::{self, FRAC, Fx};
+use crate::isqrt::isqrt;
 use crate::ray::Ray;
 use crate::row_rays::RowRays;
 use crate::vec3::Vec3;
@@ -132,40 +133,97 @@ fn view_distance(view: f32) -> Result<Fx, Error> {
 /// Refuses a view distance `view` (pixels) and pixel aspect `aspect` (the length of one row
 /// step, pixels) that break the ray budget ([`RAY_BUDGET_PX`]) for `cols × rows` pixels; the
 /// error names the field of view the screen allows.
+///
+/// All in integers, as the render path is: no floating-point library is needed for a camera
+/// however it fails.
 fn check_budget(view: Fx, aspect: Fx, cols: u16, rows: u16) -> Result<(), Error> {
-    // 4·(F² + R²) ≤ 4·B·F in units of 2⁻³² px², exactly: R² = (cols/2)² + (rows·aspect/2)².
-    let (f, a) = (
-        view.to_bits().max(0) as u128,
-        aspect.to_bits().max(0) as u128,
-    );
-    let (c, r) = (cols as u128, rows as u128);
-    let lhs = 4 * f * f + ((c * c) << 32) + r * r * a * a;
-    // 4·B·F in the same units: B·2¹⁶ times F's raw value, four times.
-    let rhs = ((4 * RAY_BUDGET_PX as u128) << FRAC) * f;
-    if lhs <= rhs {
+    // 4·(F² + R²) ≤ 4·B·F in units of 2⁻³² px², exactly, with 4R² = cols² + (rows·aspect)².
+    // F's raw value is below 2³¹, so 4F² < 2⁶⁴ and 4·B·F = 2³²·F < 2⁶³; the screen's term
+    // saturates only where it alone exceeds 4·B·F, so the comparison stays exact.
+    let f = view.to_bits().max(0) as u64;
+    let height = rows as u64 * aspect.to_bits().max(0) as u64; // rows·aspect in 2⁻¹⁶ px, < 2⁴³
+    let across = ((cols as u64 * cols as u64) << 32).saturating_add(height.saturating_mul(height));
+    let budget = (RAY_BUDGET_PX as u64) << FRAC; // B in 2⁻¹⁶ px
+    if (4 * f * f).saturating_add(across) <= (4 * budget) * f {
         return Ok(());
     }
-    // The limits, in f64 at set-up: F² − B·F + R² ≤ 0 between the roots (B ∓ √(B² − 4R²))/2.
-    let half_height = rows as f64 * aspect.to_num::<f64>() / 2.0;
-    let half_width = cols as f64 / 2.0;
-    let b = RAY_BUDGET_PX as f64;
-    let discriminant = b * b - 4.0 * (half_width * half_width + half_height * half_height);
-    if discriminant < 0.0 {
+    // The limits: F² − B·F + R² ≤ 0 between the roots (B ∓ √(B² − 4R²))/2, real only while
+    // 4R² ≤ B² (2⁶⁰ in these units).
+    let Some(discriminant) = (budget * budget).checked_sub(across) else {
         return Err(Error::DegenerateCamera {
             why: "the screen is more than 16 384 pixels across its diagonal (pixels too tall)",
         });
-    }
-    let root = libm::sqrt(discriminant);
-    let fov = |distance: f64| 2.0 * libm::atan(half_height / distance).to_degrees() * 1000.0;
-    if view.to_num::<f64>() >= b / 2.0 {
+    };
+    // Twice the far root, B + √(B² − 4R²), in 2⁻¹⁸ px (below 2³⁴): the discriminant is below
+    // 2⁶⁰, so four more bits of root fit. Its floor moves the limits by less than 10⁻⁵
+    // millidegrees, and only towards the inside of the budget.
+    let far = (budget << 2) + isqrt(discriminant << 4);
+    if view.to_bits() >= (budget / 2) as i32 {
+        // The narrowest view sees half the height at the far root: tan(fov/2) = height / far.
+        let fov = doubled_angle(far, height << 2);
         Err(Error::FieldOfViewTooNarrow {
-            min_millidegrees: libm::ceil(fov((b + root) / 2.0)) as u32,
+            min_millidegrees: fov.div_ceil(1 << 32) as u32,
         })
     } else {
+        // The widest view sees it at the near root, R²/(far/2) pixels:
+        // tan(fov/2) = (height/2)·(far/2)/R² = height · far / 4R². With 4R² ≤ 2⁶⁰, `height`
+        // is within 2³⁰ and the product below 2⁶⁴.
+        let fov = doubled_angle(across << 2, height * far);
         Err(Error::FieldOfViewTooWide {
-            max_millidegrees: libm::floor(fov((b - root) / 2.0)) as u32,
+            max_millidegrees: (fov >> 32) as u32,
         })
     }
+}
+
+/// `2·atan(atan_y / atan_x)` in units of 2⁻³² millidegrees, for `atan_x > 0`: a field of view
+/// from the tangent of its half, the error's limit.
+///
+/// By CORDIC vectoring: the vector (x, y) is turned towards the x axis by ±atan(2⁻ⁱ) at step
+/// `i`, each turn a shift and an add, and the turns add up to its angle. Scaled to a top bit
+/// of 2⁶⁰, the vector grows by the rotations' gain (1.65) to below 2⁶³; after 40 steps the
+/// angle is good to about 10⁻⁶ millidegrees.
+fn doubled_angle(atan_x: u64, atan_y: u64) -> u64 {
+    /// atan(2⁻ⁱ) as a doubled angle in 2⁻³² millidegrees, rounded: `atan(2⁻ⁱ)·(360 000/π)·2³²`.
+    const TURNS: [i64; 16] = [
+        386_547_056_640_000,
+        228_192_052_044_233,
+        120_570_413_306_876,
+        61_203_424_403_997,
+        30_720_478_360_348,
+        15_375_215_050_361,
+        7_689_483_619_191,
+        3_844_976_450_144,
+        1_922_517_559_169,
+        961_262_446_472,
+        480_631_681_601,
+        240_315_898_096,
+        120_157_956_210,
+        60_078_979_000,
+        30_039_489_612,
+        15_019_744_820,
+    ];
+    /// `(360 000/π)·2³²`: past the table, atan(2⁻ⁱ) is 2⁻ⁱ to within a relative 2⁻³³.
+    const RADIAN: i64 = 492_166_998_415_031;
+    const STEPS: u32 = 40;
+    let top = atan_x.max(atan_y);
+    let (mut x, mut y) = if top.leading_zeros() >= 3 {
+        let up = top.leading_zeros() - 3;
+        ((atan_x << up) as i64, (atan_y << up) as i64)
+    } else {
+        let down = 3 - top.leading_zeros();
+        ((atan_x >> down) as i64, (atan_y >> down) as i64)
+    };
+    let mut angle = 0i64;
+    for i in 0..STEPS {
+        let turn = TURNS.get(i as usize).copied().unwrap_or(RADIAN >> i);
+        let (dx, dy) = (y >> i, x >> i);
+        if y >= 0 {
+            (x, y, angle) = (x + dx, y - dy, angle + turn);
+        } else {
+            (x, y, angle) = (x - dx, y + dy, angle - turn);
+        }
+    }
+    angle.max(0) as u64
 }
 
 impl Camera {
@@ -714,6 +772,100 @@ mod tests {
                     );
                 }
             }
+        }
+    }
+
+    /// The limit `check_budget` names, worked out in `f64` from the budget's equation
+    /// `F² − B·F + R² = 0`, before rounding up (narrowest) or down (widest); `None` where it
+    /// has no root.
+    fn limit_in_f64(aspect: Fx, cols: u16, rows: u16, narrow: bool) -> Option<f64> {
+        let half_height = rows as f64 * aspect.to_num::<f64>() / 2.0;
+        let half_width = cols as f64 / 2.0;
+        let b = RAY_BUDGET_PX as f64;
+        let discriminant = b * b - 4.0 * (half_width * half_width + half_height * half_height);
+        if discriminant < 0.0 {
+            return None;
+        }
+        let root = if narrow {
+            b + discriminant.sqrt()
+        } else {
+            b - discriminant.sqrt()
+        };
+        Some(2.0 * (half_height / (root / 2.0)).atan().to_degrees() * 1000.0)
+    }
+
+    #[test]
+    fn the_limits_are_those_of_the_budget_in_f64() {
+        // Screens from 1 × 1 to 4096 × 4096, square pixels as `look_at` rounds them and any
+        // pinhole aspect from 1/4 to 4, each refused past both ends of the budget.
+        let mut random = crate::xorshift::XorShift(0x5eed_f00d);
+        let named = [(1, 1), (2, 2), (3, 5), (160, 128), (320, 240), (1920, 1080)];
+        let drawn = (0..20_000).map(|_| {
+            let r = random.next();
+            let (cols, rows) = ((r % 4096) as u16 + 1, ((r >> 12) % 4096) as u16 + 1);
+            let aspect = match (r >> 24) % 3 {
+                0 => (1 << 16) + ((r >> 26) % 9) as i32 - 4,
+                _ => (1 << 14) + ((r >> 26) % (15 << 14)) as i32,
+            };
+            (cols, rows, aspect)
+        });
+        // The last is 16 384 pixels high: no view distance meets the budget.
+        let screens = named
+            .map(|(cols, rows)| (cols, rows, 1 << 16))
+            .into_iter()
+            .chain([(4096, 4096, 4 << 16)]);
+        let (mut compared, mut close, mut degenerate) = (0, 0, 0);
+        for (cols, rows, aspect) in screens.chain(drawn) {
+            let aspect = Fx::from_bits(aspect);
+            for (view, narrow) in [(RAY_BUDGET_PX << FRAC | 1, true), (1, false)] {
+                let found = check_budget(Fx::from_bits(view as i32), aspect, cols, rows);
+                let Some(exact) = limit_in_f64(aspect, cols, rows, narrow) else {
+                    assert!(matches!(found, Err(Error::DegenerateCamera { .. })));
+                    degenerate += 1;
+                    continue;
+                };
+                let (limit, want) = match found {
+                    Err(Error::FieldOfViewTooNarrow { min_millidegrees }) if narrow => {
+                        (min_millidegrees, exact.ceil())
+                    }
+                    Err(Error::FieldOfViewTooWide { max_millidegrees }) if !narrow => {
+                        (max_millidegrees, exact.floor())
+                    }
+                    other => panic!("{cols}x{rows} at {aspect}: {other:?}"),
+                };
+                compared += 1;
+                // Within 10⁻⁵ of a whole millidegree, rounding may go either way; elsewhere
+                // the limit is the f64 one exactly.
+                if (exact - exact.round()).abs() < 1e-5 {
+                    close += 1;
+                    assert!((limit as f64 - want).abs() <= 1.0, "{cols}x{rows}: {exact}");
+                } else {
+                    assert_eq!(limit as f64, want, "{cols}x{rows} at {aspect}: {exact}");
+                }
+            }
+        }
+        assert!(
+            compared > 30_000 && degenerate > 1,
+            "{compared} {degenerate}"
+        );
+        assert!(close < 10, "{close} limits within 10⁻⁵ of a millidegree");
+    }
+
+    #[test]
+    fn doubled_angles_are_good_to_a_millionth_of_a_millidegree() {
+        // The table's turns are atan(2⁻ⁱ), and whole angles agree with f64 from 0° to 180°.
+        let unit = (1u64 << 32) as f64;
+        let mut random = crate::xorshift::XorShift(0xa7a2);
+        for _ in 0..20_000 {
+            let r = random.next();
+            let (x, y) = ((r >> (r % 40)) | 1, random.next() >> ((r >> 8) % 40));
+            let want = 2.0 * (y as f64).atan2(x as f64).to_degrees() * 1000.0;
+            let found = doubled_angle(x, y) as f64 / unit;
+            assert!((found - want).abs() < 1e-6, "{x} {y}: {found} {want}");
+        }
+        for (x, y, degrees) in [(1, 0, 0.0), (1, 1, 90.0), (1, u64::MAX, 180.0)] {
+            let found = doubled_angle(x, y) as f64 / unit;
+            assert!((found - degrees * 1000.0).abs() < 1e-6, "{found}");
         }
     }
 
