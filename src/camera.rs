@@ -3,7 +3,7 @@
 use micromath::F32Ext;
 
 use crate::error::Error;
-use crate::fx::{self, FRAC, Fx};
+use crate::fx::{FRAC, Fx};
 use crate::isqrt::isqrt;
 use crate::ray::Ray;
 use crate::row_rays::RowRays;
@@ -90,8 +90,12 @@ fn check_resolution(cols: u16, rows: u16) -> Result<(), Error> {
     Ok(())
 }
 
-/// A positive, finite `f32` setup length, converted to Q16.16: at most `max`, and not so small
-/// that it rounds to zero.
+/// A positive, finite `f32` setup length, converted to Q16.16: at most `max` (at most 1024),
+/// and not so small that it rounds to zero.
+///
+/// The range is checked here, where `value` is known to be positive, rather than by the
+/// general `fx_from_f32_within`: with constant inputs the whole camera set-up then folds
+/// away at compile time, as a firmware's fixed camera has it.
 fn positive(value: f32, max: f32, what: &'static str) -> Result<Fx, Error> {
     if !value.is_finite() {
         return Err(Error::NotFinite { what });
@@ -99,12 +103,17 @@ fn positive(value: f32, max: f32, what: &'static str) -> Result<Fx, Error> {
     if value <= 0.0 {
         return Err(Error::DegenerateCamera { why: what });
     }
-    let rounded = fx::fx_from_f32_within(value, Fx::from_num(max), CAMERA_RANGE, what)?;
+    let out_of_range = Error::OutOfRange {
+        what,
+        range: CAMERA_RANGE,
+    };
+    if value > max {
+        return Err(out_of_range);
+    }
+    // Finite and within (0, 1024]: the conversion cannot overflow.
+    let rounded = Fx::from_num(value);
     if rounded == Fx::ZERO {
-        return Err(Error::OutOfRange {
-            what,
-            range: CAMERA_RANGE,
-        });
+        return Err(out_of_range);
     }
     Ok(rounded)
 }
@@ -114,7 +123,7 @@ fn positive(value: f32, max: f32, what: &'static str) -> Result<Fx, Error> {
 /// Past the budget (or infinite, for a vanishing field of view) it is clamped to just past it,
 /// and below zero to zero, so that [`Camera::checked`] refuses it with the field of view the
 /// screen allows; in between it is the rounded value.
-fn view_distance(view: f32) -> Result<Fx, Error> {
+fn view_distance(view: f32) -> Fx {
     let past = (RAY_BUDGET_PX + 1) as f32;
     // NaN cannot arise from the finite, positive inputs; it would clamp to 0 and be refused.
     let clamped = if view.is_nan() {
@@ -122,12 +131,8 @@ fn view_distance(view: f32) -> Result<Fx, Error> {
     } else {
         view.clamp(0.0, past)
     };
-    fx::fx_from_f32_within(
-        clamped,
-        Fx::from_num(past),
-        CAMERA_RANGE,
-        "view distance in pixels",
-    )
+    // Finite and within [0, 16 385]: the conversion cannot overflow.
+    Fx::from_num(clamped)
 }
 
 /// Refuses a view distance `view` (pixels) and pixel aspect `aspect` (the length of one row
@@ -238,20 +243,22 @@ fn doubled_angle(atan_x: u64, atan_y: u64) -> u64 {
 
 impl Camera {
     /// The camera at `eye` looking along the unit vector `dir` at a screen `view` pixels
-    /// away, with one pixel's steps `right` and `down`, `screen` world units from the eye:
+    /// away, with one pixel's steps `right` and `down` (`aspect` being the length of `down`,
+    /// which the pinhole knows without a square root), `screen` world units from the eye:
     /// built from those rounded values and refused if they break the ray budget.
     #[allow(clippy::too_many_arguments)]
     fn checked(
         eye: Vec3,
         dir: Vec3,
         view: Fx,
-        (right, down): (Vec3, Vec3),
+        (right, down, aspect): (Vec3, Vec3, Fx),
         screen: Fx,
         cols: u16,
         rows: u16,
     ) -> Result<Self, Error> {
+        debug_assert_eq!(aspect, down.length());
         check_resolution(cols, rows)?;
-        check_budget(view, down.length(), cols, rows)?;
+        check_budget(view, aspect, cols, rows)?;
         Ok(Camera {
             eye,
             forward: dir.scale(view),
@@ -303,12 +310,13 @@ impl Camera {
                 why: "pixels more than four times taller than wide, or wider than tall",
             });
         }
-        let down = fx::fx_from_f32_within(aspect, Fx::from_num(4), "1/4 to 4", "pixel aspect")?;
+        // Within 1/4..4, so finite: the conversion cannot overflow.
+        let down = Fx::from_num(aspect);
         Camera::checked(
             Vec3::ZERO,
             Vec3::new(Fx::ZERO, Fx::ZERO, -Fx::ONE),
-            view_distance(z_p / pitch_x)?,
-            (Vec3::X, Vec3::new(Fx::ZERO, -down, Fx::ZERO)),
+            view_distance(z_p / pitch_x),
+            (Vec3::X, Vec3::new(Fx::ZERO, -down, Fx::ZERO), down),
             screen,
             cols,
             rows,
@@ -384,15 +392,15 @@ impl Camera {
             });
         }
         let right = side.try_normalize().unwrap_or(Vec3::X);
-        let true_up = right.cross(forward);
+        let down = -right.cross(forward);
         let half_angle = fov_y_degrees.to_radians() / 2.0;
         let screen_h = 2.0 * libm::tanf(half_angle);
         let pitch = screen_h / rows as f32;
         Camera::checked(
             eye,
             forward,
-            view_distance(1.0 / pitch)?,
-            (right, -true_up),
+            view_distance(1.0 / pitch),
+            (right, down, down.length()),
             Fx::ONE,
             cols,
             rows,
