@@ -531,8 +531,13 @@ impl Camera {
             Camera::shift_to_fit(&wide, denom)
         };
         // Divide by 2n·2^shift, rounding half up; the quotient is below 2³⁰ + 1 in magnitude.
-        let divisor = denom << shift;
-        let c = |w: i64| Fx::from_bits((w + divisor / 2).div_euclid(divisor) as i32);
+        // Floors compose, so it is a shift by 1 + shift and then a division by n, which the
+        // pixel centres (n = 1) skip.
+        let n = denom / 2;
+        let c = |w: i64| {
+            let halved = (w + (n << shift)) >> (shift + 1);
+            Fx::from_bits(if n == 1 { halved } else { halved.div_euclid(n) } as i32)
+        };
         Vec3::new(c(wide[0]), c(wide[1]), c(wide[2]))
     }
 
@@ -885,6 +890,65 @@ mod tests {
             let found = doubled_angle(x, y) as f64 / unit;
             assert!((found - degrees * 1000.0).abs() < 1e-6, "{found}");
         }
+    }
+
+    #[test]
+    fn sample_directions_are_the_wide_ones_divided_once_and_rounded_half_up() {
+        // The shift-then-divide rounding of `towards_sample` against one plain division by
+        // 2n·2^shift, on and off the screen, for every grid size.
+        let cameras = [
+            Camera::pinhole(3.7, 2.1, 1.3, 37, 53).unwrap(),
+            Camera::look_at(
+                [1.0, 2.0, 3.0],
+                [-4.0, 0.5, -9.0],
+                [0.1, 1.0, 0.2],
+                47.0,
+                61,
+                29,
+            )
+            .unwrap(),
+            Camera::look_at(
+                [0.0; 3],
+                [0.0, 0.0, -1.0],
+                [0.0, 1.0, 0.0],
+                150.0,
+                4096,
+                4096,
+            )
+            .unwrap(),
+        ];
+        let mut random = crate::xorshift::XorShift(0x70_3a2d);
+        let mut scaled = 0;
+        for camera in cameras {
+            for _ in 0..5_000 {
+                let r = random.next();
+                let n = (r % 16) as u8 + 1;
+                let (sx, sy) = ((r >> 4) as u8 % n, (r >> 12) as u8 % n);
+                let (row, col) = ((r >> 20) as u16, (r >> 36) as u16);
+                let (row, col) = match r >> 62 {
+                    0 => (row % camera.rows(), col % camera.cols()),
+                    1 => (row % camera.rows(), col),
+                    _ => (row, col),
+                };
+                let (wide, denom) = camera.towards_wide(row, col, sx, sy, n);
+                let shift = if row < camera.rows() && col < camera.cols() {
+                    0
+                } else {
+                    Camera::shift_to_fit(&wide, denom)
+                };
+                scaled += (shift > 0) as u32;
+                let divisor = denom << shift;
+                let want =
+                    wide.map(|w| Fx::from_bits((w + divisor / 2).div_euclid(divisor) as i32));
+                let found = camera.towards_sample(row, col, sx, sy, n);
+                assert_eq!(
+                    found,
+                    Vec3::new(want[0], want[1], want[2]),
+                    "({row}, {col}) {n}"
+                );
+            }
+        }
+        assert!(scaled > 1_000, "{scaled} directions scaled to fit");
     }
 
     #[test]
