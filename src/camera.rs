@@ -94,8 +94,8 @@ fn check_resolution(cols: u16, rows: u16) -> Result<(), Error> {
 /// and not so small that it rounds to zero.
 ///
 /// The range is checked here, where `value` is known to be positive, rather than by the
-/// general `fx_from_f32_within`: with constant inputs the whole camera set-up then folds
-/// away at compile time, as a firmware's fixed camera has it.
+/// general `fx_from_f32_within`: with constant inputs (a firmware's fixed pinhole camera) the
+/// pinhole's whole set-up, ray budget included, then folds away at compile time.
 fn positive(value: f32, max: f32, what: &'static str) -> Result<Fx, Error> {
     if !value.is_finite() {
         return Err(Error::NotFinite { what });
