@@ -4,7 +4,8 @@ use micromath::F32Ext;
 
 use crate::error::Error;
 use crate::geometry::ray::Ray;
-use crate::numbers::fx::{self, FRAC, Fx};
+use crate::numbers::fx::{FRAC, Fx};
+use crate::numbers::isqrt::isqrt;
 use crate::numbers::vec3::Vec3;
 use crate::render::accel::row_rays::RowRays;
 
@@ -89,8 +90,12 @@ fn check_resolution(cols: u16, rows: u16) -> Result<(), Error> {
     Ok(())
 }
 
-/// A positive, finite `f32` setup length, converted to Q16.16: at most `max`, and not so small
-/// that it rounds to zero.
+/// A positive, finite `f32` setup length, converted to Q16.16: at most `max` (at most 1024),
+/// and not so small that it rounds to zero.
+///
+/// The range is checked here, where `value` is known to be positive, rather than by the
+/// general `fx_from_f32_within`: with constant inputs (a firmware's fixed pinhole camera) the
+/// pinhole's whole set-up, ray budget included, then folds away at compile time.
 fn positive(value: f32, max: f32, what: &'static str) -> Result<Fx, Error> {
     if !value.is_finite() {
         return Err(Error::NotFinite { what });
@@ -98,12 +103,17 @@ fn positive(value: f32, max: f32, what: &'static str) -> Result<Fx, Error> {
     if value <= 0.0 {
         return Err(Error::DegenerateCamera { why: what });
     }
-    let rounded = fx::fx_from_f32_within(value, Fx::from_num(max), CAMERA_RANGE, what)?;
+    let out_of_range = Error::OutOfRange {
+        what,
+        range: CAMERA_RANGE,
+    };
+    if value > max {
+        return Err(out_of_range);
+    }
+    // Finite and within (0, 1024]: the conversion cannot overflow.
+    let rounded = Fx::from_num(value);
     if rounded == Fx::ZERO {
-        return Err(Error::OutOfRange {
-            what,
-            range: CAMERA_RANGE,
-        });
+        return Err(out_of_range);
     }
     Ok(rounded)
 }
@@ -113,7 +123,7 @@ fn positive(value: f32, max: f32, what: &'static str) -> Result<Fx, Error> {
 /// Past the budget (or infinite, for a vanishing field of view) it is clamped to just past it,
 /// and below zero to zero, so that [`Camera::checked`] refuses it with the field of view the
 /// screen allows; in between it is the rounded value.
-fn view_distance(view: f32) -> Result<Fx, Error> {
+fn view_distance(view: f32) -> Fx {
     let past = (RAY_BUDGET_PX + 1) as f32;
     // NaN cannot arise from the finite, positive inputs; it would clamp to 0 and be refused.
     let clamped = if view.is_nan() {
@@ -121,69 +131,134 @@ fn view_distance(view: f32) -> Result<Fx, Error> {
     } else {
         view.clamp(0.0, past)
     };
-    fx::fx_from_f32_within(
-        clamped,
-        Fx::from_num(past),
-        CAMERA_RANGE,
-        "view distance in pixels",
-    )
+    // Finite and within [0, 16 385]: the conversion cannot overflow.
+    Fx::from_num(clamped)
 }
 
 /// Refuses a view distance `view` (pixels) and pixel aspect `aspect` (the length of one row
 /// step, pixels) that break the ray budget ([`RAY_BUDGET_PX`]) for `cols × rows` pixels; the
 /// error names the field of view the screen allows.
+///
+/// All in integers, as the render path is: no floating-point library is needed for a camera
+/// however it fails.
 fn check_budget(view: Fx, aspect: Fx, cols: u16, rows: u16) -> Result<(), Error> {
-    // 4·(F² + R²) ≤ 4·B·F in units of 2⁻³² px², exactly: R² = (cols/2)² + (rows·aspect/2)².
-    let (f, a) = (
-        view.to_bits().max(0) as u128,
-        aspect.to_bits().max(0) as u128,
-    );
-    let (c, r) = (cols as u128, rows as u128);
-    let lhs = 4 * f * f + ((c * c) << 32) + r * r * a * a;
-    // 4·B·F in the same units: B·2¹⁶ times F's raw value, four times.
-    let rhs = ((4 * RAY_BUDGET_PX as u128) << FRAC) * f;
-    if lhs <= rhs {
+    // 4·(F² + R²) ≤ 4·B·F in units of 2⁻³² px², exactly, with 4R² = cols² + (rows·aspect)².
+    // F's raw value is below 2³¹, so 4F² < 2⁶⁴ and 4·B·F = 2³²·F < 2⁶³; the screen's term
+    // saturates only where it alone exceeds 4·B·F, so the comparison stays exact.
+    let f = view.to_bits().max(0) as u64;
+    let height = rows as u64 * aspect.to_bits().max(0) as u64; // rows·aspect in 2⁻¹⁶ px, < 2⁴³
+    let across = ((cols as u64 * cols as u64) << 32).saturating_add(height.saturating_mul(height));
+    let budget = (RAY_BUDGET_PX as u64) << FRAC; // B in 2⁻¹⁶ px
+    if (4 * f * f).saturating_add(across) <= (4 * budget) * f {
         return Ok(());
     }
-    // The limits, in f64 at set-up: F² − B·F + R² ≤ 0 between the roots (B ∓ √(B² − 4R²))/2.
-    let half_height = rows as f64 * aspect.to_num::<f64>() / 2.0;
-    let half_width = cols as f64 / 2.0;
-    let b = RAY_BUDGET_PX as f64;
-    let discriminant = b * b - 4.0 * (half_width * half_width + half_height * half_height);
-    if discriminant < 0.0 {
+    // The limits: F² − B·F + R² ≤ 0 between the roots (B ∓ √(B² − 4R²))/2, real only while
+    // 4R² ≤ B² (2⁶⁰ in these units).
+    let Some(discriminant) = (budget * budget).checked_sub(across) else {
         return Err(Error::DegenerateCamera {
             why: "the screen is more than 16 384 pixels across its diagonal (pixels too tall)",
         });
-    }
-    let root = libm::sqrt(discriminant);
-    let fov = |distance: f64| 2.0 * libm::atan(half_height / distance).to_degrees() * 1000.0;
-    if view.to_num::<f64>() >= b / 2.0 {
+    };
+    // Twice the far root, B + √(B² − 4R²), in 2⁻¹⁸ px (below 2³⁴): the discriminant is below
+    // 2⁶⁰, so four more bits of root fit. Its floor moves the limits by less than 10⁻⁵
+    // millidegrees, and only towards the inside of the budget.
+    let far = (budget << 2) + isqrt(discriminant << 4);
+    // The narrowest view sees half the height at the far root: tan(fov/2) = height / far.
+    // The widest sees it at the near root, R²/(far/2) pixels:
+    // tan(fov/2) = (height/2)·(far/2)/R² = height · far / 4R². With 4R² ≤ 2⁶⁰, `height` is
+    // within 2³⁰ and that product below 2⁶⁴.
+    let narrow = view.to_bits() >= (budget / 2) as i32;
+    let (x, y) = if narrow {
+        (far, height << 2)
+    } else {
+        (across << 2, height * far)
+    };
+    let fov = doubled_angle(x, y);
+    // In 2⁻³² millidegrees, at most 180 000 · 2³²; rounded towards the inside of the budget.
+    if narrow {
         Err(Error::FieldOfViewTooNarrow {
-            min_millidegrees: libm::ceil(fov((b + root) / 2.0)) as u32,
+            min_millidegrees: fov.div_ceil(1 << 32) as u32,
         })
     } else {
         Err(Error::FieldOfViewTooWide {
-            max_millidegrees: libm::floor(fov((b - root) / 2.0)) as u32,
+            max_millidegrees: (fov >> 32) as u32,
         })
     }
 }
 
+/// `2·atan(atan_y / atan_x)` in units of 2⁻³² millidegrees, for `atan_x > 0`: a field of view
+/// from the tangent of its half, the error's limit.
+///
+/// By CORDIC vectoring: the vector (x, y) is turned towards the x axis by ±atan(2⁻ⁱ) at step
+/// `i`, each turn a shift and an add, and the turns add up to its angle. Scaled to a top bit
+/// of 2⁶⁰, the vector grows by the rotations' gain (1.65) to below 2⁶³; after 40 steps the
+/// angle is good to about 10⁻⁶ millidegrees.
+///
+/// Out of line: inlined into [`check_budget`] it took about 230 bytes more flash on a
+/// Cortex-M0, on a path only a refused camera takes.
+#[inline(never)]
+fn doubled_angle(atan_x: u64, atan_y: u64) -> u64 {
+    /// atan(2⁻ⁱ) as a doubled angle in 2⁻³² millidegrees, rounded: `atan(2⁻ⁱ)·(360 000/π)·2³²`.
+    const TURNS: [i64; 16] = [
+        386_547_056_640_000,
+        228_192_052_044_233,
+        120_570_413_306_876,
+        61_203_424_403_997,
+        30_720_478_360_348,
+        15_375_215_050_361,
+        7_689_483_619_191,
+        3_844_976_450_144,
+        1_922_517_559_169,
+        961_262_446_472,
+        480_631_681_601,
+        240_315_898_096,
+        120_157_956_210,
+        60_078_979_000,
+        30_039_489_612,
+        15_019_744_820,
+    ];
+    /// `(360 000/π)·2³²`: past the table, atan(2⁻ⁱ) is 2⁻ⁱ to within a relative 2⁻³³.
+    const RADIAN: i64 = 492_166_998_415_031;
+    const STEPS: u32 = 40;
+    let top = atan_x.max(atan_y);
+    let (mut x, mut y) = if top.leading_zeros() >= 3 {
+        let up = top.leading_zeros() - 3;
+        ((atan_x << up) as i64, (atan_y << up) as i64)
+    } else {
+        let down = 3 - top.leading_zeros();
+        ((atan_x >> down) as i64, (atan_y >> down) as i64)
+    };
+    let mut angle = 0i64;
+    for i in 0..STEPS {
+        let turn = TURNS.get(i as usize).copied().unwrap_or(RADIAN >> i);
+        let (dx, dy) = (y >> i, x >> i);
+        if y >= 0 {
+            (x, y, angle) = (x + dx, y - dy, angle + turn);
+        } else {
+            (x, y, angle) = (x - dx, y + dy, angle - turn);
+        }
+    }
+    angle.max(0) as u64
+}
+
 impl Camera {
     /// The camera at `eye` looking along the unit vector `dir` at a screen `view` pixels
-    /// away, with one pixel's steps `right` and `down`, `screen` world units from the eye:
+    /// away, with one pixel's steps `right` and `down` (`aspect` being the length of `down`,
+    /// which the pinhole knows without a square root), `screen` world units from the eye:
     /// built from those rounded values and refused if they break the ray budget.
     #[allow(clippy::too_many_arguments)]
     fn checked(
         eye: Vec3,
         dir: Vec3,
         view: Fx,
-        (right, down): (Vec3, Vec3),
+        (right, down, aspect): (Vec3, Vec3, Fx),
         screen: Fx,
         cols: u16,
         rows: u16,
     ) -> Result<Self, Error> {
+        debug_assert_eq!(aspect, down.length());
         check_resolution(cols, rows)?;
-        check_budget(view, down.length(), cols, rows)?;
+        check_budget(view, aspect, cols, rows)?;
         Ok(Camera {
             eye,
             forward: dir.scale(view),
@@ -235,12 +310,13 @@ impl Camera {
                 why: "pixels more than four times taller than wide, or wider than tall",
             });
         }
-        let down = fx::fx_from_f32_within(aspect, Fx::from_num(4), "1/4 to 4", "pixel aspect")?;
+        // Within 1/4..4, so finite: the conversion cannot overflow.
+        let down = Fx::from_num(aspect);
         Camera::checked(
             Vec3::ZERO,
             Vec3::new(Fx::ZERO, Fx::ZERO, -Fx::ONE),
-            view_distance(z_p / pitch_x)?,
-            (Vec3::X, Vec3::new(Fx::ZERO, -down, Fx::ZERO)),
+            view_distance(z_p / pitch_x),
+            (Vec3::X, Vec3::new(Fx::ZERO, -down, Fx::ZERO), down),
             screen,
             cols,
             rows,
@@ -316,15 +392,15 @@ impl Camera {
             });
         }
         let right = side.try_normalize().unwrap_or(Vec3::X);
-        let true_up = right.cross(forward);
+        let down = -right.cross(forward);
         let half_angle = fov_y_degrees.to_radians() / 2.0;
         let screen_h = 2.0 * libm::tanf(half_angle);
         let pitch = screen_h / rows as f32;
         Camera::checked(
             eye,
             forward,
-            view_distance(1.0 / pitch)?,
-            (right, -true_up),
+            view_distance(1.0 / pitch),
+            (right, down, down.length()),
             Fx::ONE,
             cols,
             rows,
@@ -455,8 +531,13 @@ impl Camera {
             Camera::shift_to_fit(&wide, denom)
         };
         // Divide by 2n·2^shift, rounding half up; the quotient is below 2³⁰ + 1 in magnitude.
-        let divisor = denom << shift;
-        let c = |w: i64| Fx::from_bits((w + divisor / 2).div_euclid(divisor) as i32);
+        // Floors compose, so it is a shift by 1 + shift and then a division by n, which the
+        // pixel centres (n = 1) skip.
+        let n = denom / 2;
+        let c = |w: i64| {
+            let halved = (w + (n << shift)) >> (shift + 1);
+            Fx::from_bits(if n == 1 { halved } else { halved.div_euclid(n) } as i32)
+        };
         Vec3::new(c(wide[0]), c(wide[1]), c(wide[2]))
     }
 
@@ -715,6 +796,159 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// The limit `check_budget` names, worked out in `f64` from the budget's equation
+    /// `F² − B·F + R² = 0`, before rounding up (narrowest) or down (widest); `None` where it
+    /// has no root.
+    fn limit_in_f64(aspect: Fx, cols: u16, rows: u16, narrow: bool) -> Option<f64> {
+        let half_height = rows as f64 * aspect.to_num::<f64>() / 2.0;
+        let half_width = cols as f64 / 2.0;
+        let b = RAY_BUDGET_PX as f64;
+        let discriminant = b * b - 4.0 * (half_width * half_width + half_height * half_height);
+        if discriminant < 0.0 {
+            return None;
+        }
+        let root = if narrow {
+            b + discriminant.sqrt()
+        } else {
+            b - discriminant.sqrt()
+        };
+        Some(2.0 * (half_height / (root / 2.0)).atan().to_degrees() * 1000.0)
+    }
+
+    #[test]
+    fn the_limits_are_those_of_the_budget_in_f64() {
+        // Screens from 1 × 1 to 4096 × 4096, square pixels as `look_at` rounds them and any
+        // pinhole aspect from 1/4 to 4, each refused past both ends of the budget.
+        let mut random = crate::xorshift::XorShift(0x5eed_f00d);
+        let named = [(1, 1), (2, 2), (3, 5), (160, 128), (320, 240), (1920, 1080)];
+        let drawn = (0..20_000).map(|_| {
+            let r = random.next();
+            let (cols, rows) = ((r % 4096) as u16 + 1, ((r >> 12) % 4096) as u16 + 1);
+            let aspect = match (r >> 24) % 3 {
+                0 => (1 << 16) + ((r >> 26) % 9) as i32 - 4,
+                _ => (1 << 14) + ((r >> 26) % (15 << 14)) as i32,
+            };
+            (cols, rows, aspect)
+        });
+        // The last is 16 384 pixels high: no view distance meets the budget.
+        let screens = named
+            .map(|(cols, rows)| (cols, rows, 1 << 16))
+            .into_iter()
+            .chain([(4096, 4096, 4 << 16)]);
+        let (mut compared, mut close, mut degenerate) = (0, 0, 0);
+        for (cols, rows, aspect) in screens.chain(drawn) {
+            let aspect = Fx::from_bits(aspect);
+            for (view, narrow) in [(RAY_BUDGET_PX << FRAC | 1, true), (1, false)] {
+                let found = check_budget(Fx::from_bits(view as i32), aspect, cols, rows);
+                let Some(exact) = limit_in_f64(aspect, cols, rows, narrow) else {
+                    assert!(matches!(found, Err(Error::DegenerateCamera { .. })));
+                    degenerate += 1;
+                    continue;
+                };
+                let (limit, want) = match found {
+                    Err(Error::FieldOfViewTooNarrow { min_millidegrees }) if narrow => {
+                        (min_millidegrees, exact.ceil())
+                    }
+                    Err(Error::FieldOfViewTooWide { max_millidegrees }) if !narrow => {
+                        (max_millidegrees, exact.floor())
+                    }
+                    other => panic!("{cols}x{rows} at {aspect}: {other:?}"),
+                };
+                compared += 1;
+                // Within 10⁻⁵ of a whole millidegree, rounding may go either way; elsewhere
+                // the limit is the f64 one exactly.
+                if (exact - exact.round()).abs() < 1e-5 {
+                    close += 1;
+                    assert!((limit as f64 - want).abs() <= 1.0, "{cols}x{rows}: {exact}");
+                } else {
+                    assert_eq!(limit as f64, want, "{cols}x{rows} at {aspect}: {exact}");
+                }
+            }
+        }
+        assert!(
+            compared > 30_000 && degenerate > 1,
+            "{compared} {degenerate}"
+        );
+        assert!(close < 10, "{close} limits within 10⁻⁵ of a millidegree");
+    }
+
+    #[test]
+    fn doubled_angles_are_good_to_a_millionth_of_a_millidegree() {
+        // The table's turns are atan(2⁻ⁱ), and whole angles agree with f64 from 0° to 180°.
+        let unit = (1u64 << 32) as f64;
+        let mut random = crate::xorshift::XorShift(0xa7a2);
+        for _ in 0..20_000 {
+            let r = random.next();
+            let (x, y) = ((r >> (r % 40)) | 1, random.next() >> ((r >> 8) % 40));
+            let want = 2.0 * (y as f64).atan2(x as f64).to_degrees() * 1000.0;
+            let found = doubled_angle(x, y) as f64 / unit;
+            assert!((found - want).abs() < 1e-6, "{x} {y}: {found} {want}");
+        }
+        for (x, y, degrees) in [(1, 0, 0.0), (1, 1, 90.0), (1, u64::MAX, 180.0)] {
+            let found = doubled_angle(x, y) as f64 / unit;
+            assert!((found - degrees * 1000.0).abs() < 1e-6, "{found}");
+        }
+    }
+
+    #[test]
+    fn sample_directions_are_the_wide_ones_divided_once_and_rounded_half_up() {
+        // The shift-then-divide rounding of `towards_sample` against one plain division by
+        // 2n·2^shift, on and off the screen, for every grid size.
+        let cameras = [
+            Camera::pinhole(3.7, 2.1, 1.3, 37, 53).unwrap(),
+            Camera::look_at(
+                [1.0, 2.0, 3.0],
+                [-4.0, 0.5, -9.0],
+                [0.1, 1.0, 0.2],
+                47.0,
+                61,
+                29,
+            )
+            .unwrap(),
+            Camera::look_at(
+                [0.0; 3],
+                [0.0, 0.0, -1.0],
+                [0.0, 1.0, 0.0],
+                150.0,
+                4096,
+                4096,
+            )
+            .unwrap(),
+        ];
+        let mut random = crate::xorshift::XorShift(0x70_3a2d);
+        let mut scaled = 0;
+        for camera in cameras {
+            for _ in 0..5_000 {
+                let r = random.next();
+                let n = (r % 16) as u8 + 1;
+                let (sx, sy) = ((r >> 4) as u8 % n, (r >> 12) as u8 % n);
+                let (row, col) = ((r >> 20) as u16, (r >> 36) as u16);
+                let (row, col) = match r >> 62 {
+                    0 => (row % camera.rows(), col % camera.cols()),
+                    1 => (row % camera.rows(), col),
+                    _ => (row, col),
+                };
+                let (wide, denom) = camera.towards_wide(row, col, sx, sy, n);
+                let shift = if row < camera.rows() && col < camera.cols() {
+                    0
+                } else {
+                    Camera::shift_to_fit(&wide, denom)
+                };
+                scaled += (shift > 0) as u32;
+                let divisor = denom << shift;
+                let want =
+                    wide.map(|w| Fx::from_bits((w + divisor / 2).div_euclid(divisor) as i32));
+                let found = camera.towards_sample(row, col, sx, sy, n);
+                assert_eq!(
+                    found,
+                    Vec3::new(want[0], want[1], want[2]),
+                    "({row}, {col}) {n}"
+                );
+            }
+        }
+        assert!(scaled > 1_000, "{scaled} directions scaled to fit");
     }
 
     #[test]
