@@ -129,8 +129,17 @@ done <<<"$host"
 
 # --- Build, run, compare -------------------------------------------------------------------
 
+# Source paths end up in the firmware (the locations of its panics), so its flash figure would
+# depend on where the checkout and cargo's registry lie: both are mapped to fixed names. The
+# remapping is added to each target's rustflags from .cargo/config.toml (cargo joins arrays).
+cargo_home=${CARGO_HOME:-$HOME/.cargo}
+remap() { # target: the --config value for it
+    printf "target.%s.rustflags=['--remap-path-prefix=%s=/fixray','--remap-path-prefix=%s=/cargo']" \
+        "$1" "$root" "$cargo_home"
+}
+
 for target in "${targets[@]}"; do
-    (cd "$firmware" && cargo build --quiet --release --target "$target" --bins)
+    (cd "$firmware" && cargo build --quiet --release --target "$target" --config "$(remap "$target")" --bins)
 done
 
 logs="$firmware/target/firmware-logs"
@@ -153,7 +162,8 @@ for target in "${targets[@]}"; do
     for bin in "${bins[@]}"; do
         log="$logs/$target-$bin.txt"
         status=0
-        (cd "$firmware" && cargo run --quiet --release --target "$target" --bin "$bin") \
+        (cd "$firmware" && cargo run --quiet --release --target "$target" \
+            --config "$(remap "$target")" --bin "$bin") \
             >"$log" 2>&1 || status=$?
         renderer=$(field renderer "$(line board=)")
         frame=$(line frame:)
