@@ -17,7 +17,7 @@
 mod accuracy;
 
 use accuracy::Accuracy;
-use fixray::{Camera, Error, Scene, demo};
+use fixray::{Camera, Scene, demo};
 use fixray_reference::{DCamera, DScene, classic_camera, demo_camera};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
@@ -56,9 +56,7 @@ fn row(
     dcamera: &DCamera,
     diff: Option<&str>,
 ) -> Result<(), Box<dyn std::error::Error>> {
-    let dscene = DScene::from_scene(scene).ok_or(Error::DegenerateCamera {
-        why: "the scene has no f64 twin",
-    })?;
+    let dscene = DScene::from_scene(scene).ok_or("the scene has no f64 twin")?;
     let (cols, rows) = (camera.cols(), camera.rows());
     let mut image = Vec::with_capacity(cols as usize * rows as usize * 3);
     let a = Accuracy::measure_each(scene, camera, &dscene, dcamera, |_, _, seen, reference| {

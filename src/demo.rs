@@ -7,7 +7,7 @@
 //!   and a checkerboard floor — the geometry of ssloy's tinyraytracer — seen by the look-at
 //!   camera ([`classic_camera`]).
 
-use crate::error::Error;
+use crate::error::{CameraProblem, Error};
 use crate::geometry::plane::Plane;
 use crate::geometry::sphere::Sphere;
 use crate::numbers::fx::Fx;
@@ -65,9 +65,7 @@ pub const SCREEN_DISTANCE: f32 = 1.732_050_8;
 /// screen `2 · cols / rows` wide and [`SCREEN_HEIGHT`] high at [`SCREEN_DISTANCE`].
 pub fn camera(cols: u16, rows: u16) -> Result<Camera, Error> {
     if rows == 0 {
-        return Err(Error::DegenerateCamera {
-            why: "the screen has no pixels",
-        });
+        return Err(Error::DegenerateCamera(CameraProblem::NoPixels));
     }
     let width = SCREEN_HEIGHT * cols as f32 / rows as f32;
     Camera::pinhole(width, SCREEN_HEIGHT, SCREEN_DISTANCE, rows, cols)

@@ -1,43 +1,78 @@
-//! The crate's one error type.
+//! The crate's one error type, and the names of what it refuses.
 
 use core::fmt;
+
+use crate::numbers::fx::{Fx, LIMIT};
 
 /// Why fixray refused an input.
 ///
 /// Every constructor that takes user values checks them and returns one of these instead of
-/// panicking, wrapping or dividing by zero later in the render path.
+/// panicking, wrapping or dividing by zero later in the render path. Each variant names the
+/// problem as data ([`Quantity`], [`CameraProblem`], sizes and indices), so a caller can tell
+/// one refusal from another without reading its message.
+///
+/// ```
+/// use fixray::{CameraProblem, Error, Fx, LIMIT, Light, Quantity, Vec3};
+/// let dim = Light::new(Vec3::ZERO, Fx::from_num(5));
+/// assert_eq!(
+///     dim,
+///     Err(Error::OutOfRange { quantity: Quantity::LightIntensity, min: Fx::ZERO, max: Fx::from_num(4) })
+/// );
+/// assert_eq!(dim.unwrap_err().to_string(), "light intensity is outside 0 to 4");
+///
+/// let far = Light::new(Vec3::from_ints(0, 2000, 0), Fx::ONE).unwrap_err();
+/// assert_eq!(far.to_string(), "light position is outside the overflow-safe range ±1024");
+///
+/// let blind = Error::DegenerateCamera(CameraProblem::TargetIsEye);
+/// assert_eq!(blind.to_string(), "degenerate camera: target is the eye");
+///
+/// // A positive length: from the smallest Q16.16 value above zero.
+/// let near = Error::OutOfRange { quantity: Quantity::ScreenDistance, min: Fx::DELTA, max: LIMIT };
+/// assert_eq!(near.to_string(), "screen distance is outside 2⁻¹⁶ (one Q16.16 step) to 1024");
+///
+/// let short = Error::BufferLength { needed: 40, got: 39 };
+/// assert_eq!(short.to_string(), "row buffer holds 39 pixels where a row of the picture has 40");
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 #[non_exhaustive]
 pub enum Error {
     /// A float input was NaN or infinite.
     NotFinite {
         /// The quantity that was not finite.
-        what: &'static str,
+        quantity: Quantity,
     },
-    /// A value lies outside the range fixray documents as overflow-safe ([`LIMIT`](crate::LIMIT)).
+    /// A value lies outside its range: `min ..= max`, both included, compared as the value
+    /// was rounded to Q16.16.
+    ///
+    /// Coordinates must lie within ±[`LIMIT`](crate::LIMIT), the overflow-safe range; weights,
+    /// intensities and sizes have ranges of their own (each constructor documents its ranges).
+    /// An integer quantity (shininess) has its integer bounds here. A range open at zero,
+    /// such as a length that must be positive, starts at [`Fx::DELTA`], the smallest Q16.16
+    /// value above zero.
     OutOfRange {
         /// The quantity that was out of range.
-        what: &'static str,
-        /// The range it must lie in.
-        range: &'static str,
+        quantity: Quantity,
+        /// The smallest value allowed.
+        min: Fx,
+        /// The largest value allowed.
+        max: Fx,
     },
     /// A sphere radius was zero or negative.
     NonPositiveRadius,
-    /// A vector that must have a direction (a normal, a ray direction) was zero.
+    /// A vector that must have a direction (a plane's normal, a ray's direction) was zero.
     ZeroVector {
         /// The vector that was zero.
-        what: &'static str,
+        quantity: Quantity,
     },
+    /// Plane bounds that enclose nothing: `min` must lie below `max` on both axes.
+    EmptyBounds,
     /// A scene or light list is full; the capacity is in its type.
     CapacityExceeded {
         /// The capacity that was reached.
         capacity: usize,
     },
     /// Camera parameters that do not define a view.
-    DegenerateCamera {
-        /// What is wrong with them.
-        why: &'static str,
-    },
+    DegenerateCamera(CameraProblem),
     /// A field of view too narrow for a camera's number of rows: its rays could not tell its
     /// pixels apart to within half a pixel.
     FieldOfViewTooNarrow {
@@ -80,26 +115,203 @@ pub enum Error {
         /// The rows the camera has (valid rows are `0..rows`).
         rows: u16,
     },
-    /// A camera and a framebuffer (or display area, or row buffer) of different sizes.
+    /// A camera and a framebuffer or display area of different sizes.
     SizeMismatch {
         /// Columns and rows the camera was built for.
         camera: (u16, u16),
         /// Columns and rows of the target.
         target: (u16, u16),
     },
+    /// A row buffer of the wrong length for the camera's rows: rendering one row needs a
+    /// buffer of exactly one row, drawing in bands one of at least one row.
+    BufferLength {
+        /// The length one row needs: the camera's columns.
+        needed: usize,
+        /// The buffer's length.
+        got: usize,
+    },
+    /// A viewport whose far corner lies past the display coordinates embedded-graphics can
+    /// hold (`i32`).
+    ViewportOverflow,
+}
+
+/// The quantities fixray checks, as named by [`Error`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum Quantity {
+    /// A sphere's centre.
+    SphereCentre,
+    /// A sphere's radius.
+    SphereRadius,
+    /// The point a plane passes through.
+    PlanePoint,
+    /// The direction a plane faces.
+    PlaneNormal,
+    /// The corners of a bounded plane's rectangle.
+    PlaneBounds,
+    /// Where a light is.
+    LightPosition,
+    /// How strongly a light lights.
+    LightIntensity,
+    /// A scene's ambient light.
+    Ambient,
+    /// A material's diffuse weight.
+    DiffuseWeight,
+    /// A material's specular weight.
+    SpecularWeight,
+    /// A material's shininess (Phong exponent).
+    Shininess,
+    /// A material's reflectivity.
+    Reflectivity,
+    /// The side of a checkerboard's squares.
+    CheckerSize,
+    /// Where a ray starts.
+    RayOrigin,
+    /// Where a ray goes.
+    RayDirection,
+    /// Where a camera's eye is.
+    CameraEye,
+    /// What a camera looks at.
+    CameraTarget,
+    /// A camera's up direction.
+    CameraUp,
+    /// A camera's vertical field of view.
+    FieldOfView,
+    /// A pinhole camera's screen width, in world units.
+    ScreenWidth,
+    /// A pinhole camera's screen height, in world units.
+    ScreenHeight,
+    /// How far a pinhole camera's screen is from its eye.
+    ScreenDistance,
+    /// A pinhole camera's pixel width: its screen width over its columns.
+    PixelWidth,
+    /// A pinhole camera's pixel height: its screen height over its rows.
+    PixelHeight,
+    /// How far an orbiting camera is from its target.
+    OrbitDistance,
+    /// The turn of an orbiting camera about the vertical.
+    OrbitYaw,
+    /// The height of an orbiting camera above the horizon, as an angle.
+    OrbitPitch,
+}
+
+impl fmt::Display for Quantity {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            Quantity::SphereCentre => "sphere centre",
+            Quantity::SphereRadius => "sphere radius",
+            Quantity::PlanePoint => "plane point",
+            Quantity::PlaneNormal => "plane normal",
+            Quantity::PlaneBounds => "plane bounds",
+            Quantity::LightPosition => "light position",
+            Quantity::LightIntensity => "light intensity",
+            Quantity::Ambient => "ambient light",
+            Quantity::DiffuseWeight => "diffuse weight",
+            Quantity::SpecularWeight => "specular weight",
+            Quantity::Shininess => "shininess",
+            Quantity::Reflectivity => "reflectivity",
+            Quantity::CheckerSize => "checker size",
+            Quantity::RayOrigin => "ray origin",
+            Quantity::RayDirection => "ray direction",
+            Quantity::CameraEye => "camera eye",
+            Quantity::CameraTarget => "camera target",
+            Quantity::CameraUp => "camera up",
+            Quantity::FieldOfView => "field of view",
+            Quantity::ScreenWidth => "screen width",
+            Quantity::ScreenHeight => "screen height",
+            Quantity::ScreenDistance => "screen distance",
+            Quantity::PixelWidth => "pixel width (screen width / cols)",
+            Quantity::PixelHeight => "pixel height (screen height / rows)",
+            Quantity::OrbitDistance => "orbit distance",
+            Quantity::OrbitYaw => "orbit yaw",
+            Quantity::OrbitPitch => "orbit pitch",
+        })
+    }
+}
+
+/// What makes camera parameters fail to define a view, as named by
+/// [`Error::DegenerateCamera`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum CameraProblem {
+    /// No columns or no rows.
+    NoPixels,
+    /// More than [`MAX_PIXELS`](crate::MAX_PIXELS) columns or rows.
+    TooManyPixels,
+    /// Pixels more than four times taller than wide, or wider than tall.
+    PixelAspect,
+    /// A screen more than 16 384 pixels across its diagonal (its pixels stretched tall): no
+    /// view distance keeps its rays within half a pixel.
+    DiagonalTooLong,
+    /// A field of view not strictly between 0° and 180°.
+    FieldOfView,
+    /// The target is the eye, so there is no view direction.
+    TargetIsEye,
+    /// Up is the zero vector.
+    UpIsZero,
+    /// Up is parallel to the view direction (within about 0.2°), so it does not say which way
+    /// the picture's top is.
+    UpAlongView,
+    /// An orbit's pitch not strictly between −90° and 90°.
+    OrbitPitch,
+}
+
+impl fmt::Display for CameraProblem {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            CameraProblem::NoPixels => "the screen has no pixels",
+            CameraProblem::TooManyPixels => "the screen is wider or taller than 4096 pixels",
+            CameraProblem::PixelAspect => {
+                "pixels more than four times taller than wide, or wider than tall"
+            }
+            CameraProblem::DiagonalTooLong => {
+                "the screen is more than 16 384 pixels across its diagonal (pixels too tall)"
+            }
+            CameraProblem::FieldOfView => {
+                "field of view must lie strictly between 0 and 180 degrees"
+            }
+            CameraProblem::TargetIsEye => "target is the eye",
+            CameraProblem::UpIsZero => "up is the zero vector",
+            CameraProblem::UpAlongView => "up is parallel to the view direction",
+            CameraProblem::OrbitPitch => "orbit pitch must lie strictly between -90 and 90 degrees",
+        })
+    }
+}
+
+/// Writes the range `min ..= max` as the messages state it: the overflow-safe range by name,
+/// a symmetric range as `±max`, and the smallest positive Q16.16 value as `2⁻¹⁶`.
+fn write_range(f: &mut fmt::Formatter<'_>, min: Fx, max: Fx) -> fmt::Result {
+    if min == -LIMIT && max == LIMIT {
+        write!(f, "the overflow-safe range ±{LIMIT}")
+    } else if min == -max {
+        write!(f, "±{max}")
+    } else if min == Fx::DELTA {
+        write!(f, "2⁻¹⁶ (one Q16.16 step) to {max}")
+    } else {
+        write!(f, "{min} to {max}")
+    }
 }
 
 impl fmt::Display for Error {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            Error::NotFinite { what } => write!(f, "{what} is NaN or infinite"),
-            Error::OutOfRange { what, range } => write!(f, "{what} is outside {range}"),
+            Error::NotFinite { quantity } => write!(f, "{quantity} is NaN or infinite"),
+            Error::OutOfRange { quantity, min, max } => {
+                write!(f, "{quantity} is outside ")?;
+                write_range(f, *min, *max)
+            }
             Error::NonPositiveRadius => write!(f, "sphere radius must be greater than zero"),
-            Error::ZeroVector { what } => write!(f, "{what} is the zero vector"),
+            Error::ZeroVector { quantity } => write!(f, "{quantity} is the zero vector"),
+            Error::EmptyBounds => {
+                write!(
+                    f,
+                    "plane bounds enclose nothing: min must lie below max on both axes"
+                )
+            }
             Error::CapacityExceeded { capacity } => {
                 write!(f, "capacity of {capacity} is already used")
             }
-            Error::DegenerateCamera { why } => write!(f, "degenerate camera: {why}"),
+            Error::DegenerateCamera(problem) => write!(f, "degenerate camera: {problem}"),
             Error::FieldOfViewTooNarrow { min_millidegrees } => write!(
                 f,
                 "field of view too narrow for this screen: at least {}.{:03} degrees",
@@ -129,8 +341,27 @@ impl fmt::Display for Error {
                 "camera is {}x{} pixels but the target is {}x{}",
                 camera.0, camera.1, target.0, target.1
             ),
+            Error::BufferLength { needed, got } => write!(
+                f,
+                "row buffer holds {got} pixels where a row of the picture has {needed}"
+            ),
+            Error::ViewportOverflow => write!(
+                f,
+                "viewport position is outside display points whose far corner fits in i32"
+            ),
         }
     }
 }
 
 impl core::error::Error for Error {}
+
+/// Refuses a value outside `min ..= max` with [`Error::OutOfRange`] naming `quantity`: the
+/// one range check behind every checked constructor.
+pub(crate) const fn within(value: Fx, min: Fx, max: Fx, quantity: Quantity) -> Result<Fx, Error> {
+    // Raw comparisons, so that `const` constructors can use it.
+    if value.to_bits() < min.to_bits() || value.to_bits() > max.to_bits() {
+        Err(Error::OutOfRange { quantity, min, max })
+    } else {
+        Ok(value)
+    }
+}

@@ -83,7 +83,7 @@ mod scene;
 mod xorshift;
 
 pub use draw::{DrawError, FromRgb, Picture, Viewport};
-pub use error::Error;
+pub use error::{CameraProblem, Error, Quantity};
 pub use framebuffer::Framebuffer;
 pub use geometry::{Hit, Plane, Ray, Shape, Sphere};
 pub use hash::FrameHash;

@@ -6,8 +6,8 @@
 //! own inputs (not from fixray's rounded camera): where a ray lands on that screen, in pixels.
 
 use fixray::{
-    Camera, Error, Ray, Rgb, demo, render_row, render_row_supersampled, shoot_row,
-    shoot_row_skipping,
+    Camera, Error, Fx, LIMIT, Quantity, Ray, Rgb, demo, render_row, render_row_supersampled,
+    shoot_row, shoot_row_skipping,
 };
 use fixray_reference::{DRay, DScene, DVec3};
 
@@ -274,8 +274,9 @@ fn degenerate_pinholes_are_refused_with_the_quantity() {
     assert_eq!(
         Camera::pinhole(1.0, 1.0, 1e-6, 1, 1).map(|_| ()),
         Err(Error::OutOfRange {
-            what: "screen distance",
-            range: "2⁻¹⁶ (one Q16.16 step) to 1024"
+            quantity: Quantity::ScreenDistance,
+            min: Fx::DELTA,
+            max: LIMIT,
         })
     );
     // A screen distance that rounds fine but is a millionth of a pixel.
@@ -284,13 +285,14 @@ fn degenerate_pinholes_are_refused_with_the_quantity() {
         Err(Error::FieldOfViewTooWide { max_millidegrees }) if max_millidegrees > 179_990
     ));
     // Pixels narrower than a Q16.16 step.
-    assert!(matches!(
-        Camera::pinhole(1e-4, 1e-4, 1e-4, 16, 16),
+    assert_eq!(
+        Camera::pinhole(1e-4, 1e-4, 1e-4, 16, 16).map(|_| ()),
         Err(Error::OutOfRange {
-            what: "pixel width (screen width / cols)",
-            ..
+            quantity: Quantity::PixelWidth,
+            min: Fx::DELTA,
+            max: LIMIT,
         })
-    ));
+    );
     // A screen too far for its pixels: 1024 units away, 1/64 wide over 4 pixels.
     assert!(matches!(
         Camera::pinhole(1.0 / 64.0, 1.0 / 64.0, 1024.0, 4, 4),
@@ -439,10 +441,10 @@ fn every_function_that_takes_a_row_checks_it_the_same_way() {
     );
     assert_eq!(render_row(&scene, &camera, 31, &mut out), Ok(()));
     assert_eq!(camera.row_rays(31).map(|r| r.len()), Ok(40));
-    // A row buffer of the wrong width: only the columns differ.
-    let narrow = Err(Error::SizeMismatch {
-        camera: (40, 32),
-        target: (39, 32),
+    // A row buffer shorter than the row.
+    let narrow = Err(Error::BufferLength {
+        needed: 40,
+        got: 39,
     });
     assert_eq!(render_row(&scene, &camera, 5, &mut out[..39]), narrow);
     assert_eq!(

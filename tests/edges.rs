@@ -14,7 +14,7 @@ fn light() -> Light {
 }
 
 fn sphere(x: f32, y: f32, z: f32, r: f32) -> Sphere {
-    let centre = Vec3::from_f32([x, y, z], "centre").unwrap();
+    let centre = Vec3::from_f32([x, y, z], fixray::Quantity::SphereCentre).unwrap();
     Sphere::new(centre, Fx::from_num(r)).unwrap()
 }
 

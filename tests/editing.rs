@@ -2,8 +2,8 @@
 //! from scratch with the edited values, shadow cones and all.
 
 use fixray::{
-    Background, Camera, Error, Fx, Light, Material, Object, Plane, Rgb, Scene, Shape, Sphere, Vec3,
-    render_row,
+    Background, Camera, Error, Fx, Light, Material, Object, Plane, Quantity, Rgb, Scene, Shape,
+    Sphere, Vec3, render_row,
 };
 
 const SKY: Rgb = Rgb::new(40, 60, 200);
@@ -158,10 +158,14 @@ fn edits_of_what_is_not_there_are_refused() {
         scene.set_light(1, light(0, 1, 0)),
         Err(Error::NoSuchLight { index: 1, count: 1 })
     );
-    assert!(matches!(
+    assert_eq!(
         scene.set_ambient(Fx::from_num(1.5)),
-        Err(Error::OutOfRange { .. })
-    ));
+        Err(Error::OutOfRange {
+            quantity: Quantity::Ambient,
+            min: Fx::ZERO,
+            max: Fx::ONE
+        })
+    );
     // Nothing changed.
     assert_eq!(scene.objects().len(), 1);
     assert_eq!(scene.ambient(), Fx::from_num(0.2));

@@ -48,9 +48,19 @@ use common::{Source, XorShift};
 use embedded_graphics::prelude::Point;
 use fixray::draw::{self, FromRgb};
 use fixray::{
-    Background, Camera, Checker, Error, FAR, Fx, Hit, LIMIT, Light, Material, Object, Plane, Ray,
-    Rgb, Scene, Shape, Sphere, Vec3, demo,
+    Background, Camera, CameraProblem, Checker, Error, FAR, Fx, Hit, LIMIT, Light, Material,
+    Object, Plane, Quantity, Ray, Rgb, Scene, Shape, Sphere, Vec3, demo,
 };
+
+/// The refusal of `quantity` outside `min ..= max`.
+fn range(quantity: Quantity, min: Fx, max: Fx) -> Error {
+    Error::OutOfRange { quantity, min, max }
+}
+
+/// The refusal of `quantity` outside the overflow-safe range ±1024.
+fn outside(quantity: Quantity) -> Error {
+    range(quantity, -LIMIT, LIMIT)
+}
 
 // ---------------------------------------------------------------------------------------------
 // The harness: seeded cases, each panic caught and reported with its seed.
@@ -251,14 +261,24 @@ fn demo_cameras_at_hostile_sizes() {
             for camera in [demo::camera(cols, rows), demo::classic_camera(cols, rows)] {
                 match camera {
                     // [ASSERT: Err for invalid input]
-                    Err(_) if bad => {}
+                    Err(e) if bad => {
+                        let problem = if cols == 0 || rows == 0 {
+                            CameraProblem::NoPixels
+                        } else {
+                            CameraProblem::TooManyPixels
+                        };
+                        assert_eq!(e, Error::DegenerateCamera(problem), "{cols}×{rows}");
+                    }
                     Err(e) if 2 * cols as u32 > 1024 * rows as u32 => {
                         // The demo's screen is 2 units high and its pixels square: wider than
                         // 512 pixels per row it is more than 1024 units wide, out of range.
                         assert!(
                             matches!(
                                 e,
-                                Error::OutOfRange { .. } | Error::FieldOfViewTooWide { .. }
+                                Error::OutOfRange {
+                                    quantity: Quantity::ScreenWidth,
+                                    ..
+                                } | Error::FieldOfViewTooWide { .. }
                             ),
                             "{e}"
                         );
@@ -315,13 +335,18 @@ fn constructors_refuse_exactly_the_invalid_values() {
 
             // [ASSERT: Err for invalid input] fx_from_f32 and Vec3::from_f32.
             let f = common::f32_around(src, 2000.0, 3);
-            match fixray::fx_from_f32(f, "x") {
+            let q = Quantity::LightIntensity;
+            match fixray::fx_from_f32(f, q) {
                 Ok(v) => {
                     assert!(f.is_finite() && f.abs() <= 1024.0, "{f} accepted");
                     assert_eq!(v, Fx::from_num(f), "{f} converts to the nearest Q16.16");
                 }
-                Err(Error::NotFinite { what: "x" }) => assert!(!f.is_finite(), "{f}"),
-                Err(Error::OutOfRange { what: "x", .. }) => {
+                Err(Error::NotFinite { quantity }) if quantity == q => {
+                    assert!(!f.is_finite(), "{f}")
+                }
+                Err(Error::OutOfRange { quantity, min, max })
+                    if (quantity, min, max) == (q, -LIMIT, LIMIT) =>
+                {
                     assert!(f.is_finite() && f.abs() > 1024.0, "{f}")
                 }
                 Err(e) => panic!("{f}: wrong error {e}"),
@@ -332,7 +357,21 @@ fn constructors_refuse_exactly_the_invalid_values() {
                 common::f32_around(src, 1500.0, 4),
             ];
             let ok = v3.iter().all(|c| c.is_finite() && c.abs() <= 1024.0);
-            assert_eq!(Vec3::from_f32(v3, "v").is_ok(), ok, "{v3:?}");
+            let vec3 = Vec3::from_f32(v3, Quantity::CameraEye);
+            assert_eq!(vec3.is_ok(), ok, "{v3:?}");
+            if let Err(e) = vec3 {
+                // Components are checked in order: the first one refused names the error.
+                let first = v3
+                    .into_iter()
+                    .find(|c| !(c.is_finite() && c.abs() <= 1024.0));
+                let want = match first {
+                    Some(c) if !c.is_finite() => Error::NotFinite {
+                        quantity: Quantity::CameraEye,
+                    },
+                    _ => outside(Quantity::CameraEye),
+                };
+                assert_eq!(e, want, "{v3:?}");
+            }
 
             // [ASSERT: Err for invalid input] Ray::new: origin in range, direction non-zero.
             let (origin, dir) = (common::vec_any(src), common::direction(src));
@@ -346,7 +385,16 @@ fn constructors_refuse_exactly_the_invalid_values() {
                     assert!((len - 1.0).abs() <= common::UNIT_TOLERANCE, "{ray:?}");
                     assert_eq!(ray.at(Fx::ZERO), origin);
                 }
-                Err(e) => assert!(!vec_in_limit(origin) || dir == Vec3::ZERO, "{e}"),
+                Err(e) if !vec_in_limit(origin) => assert_eq!(e, outside(Quantity::RayOrigin)),
+                Err(e) => assert_eq!(
+                    (e, dir),
+                    (
+                        Error::ZeroVector {
+                            quantity: Quantity::RayDirection
+                        },
+                        Vec3::ZERO
+                    )
+                ),
             }
 
             // [ASSERT: Err for invalid input] Sphere::new: centre in range, 0 < r ≤ 1024.
@@ -360,8 +408,9 @@ fn constructors_refuse_exactly_the_invalid_values() {
                     let top = centre + Vec3::new(Fx::ZERO, radius, Fx::ZERO);
                     assert_eq!(s.normal_at(top), Vec3::Y, "{s:?}");
                 }
+                Err(e) if !vec_in_limit(centre) => assert_eq!(e, outside(Quantity::SphereCentre)),
                 Err(Error::NonPositiveRadius) => assert!(radius <= Fx::ZERO),
-                Err(e) => assert!(!vec_in_limit(centre) || radius > LIMIT, "{e}"),
+                Err(e) => assert_eq!((e, radius > LIMIT), (outside(Quantity::SphereRadius), true)),
             }
 
             // [ASSERT: Err for invalid input] Plane::new and bounded.
@@ -386,21 +435,44 @@ fn constructors_refuse_exactly_the_invalid_values() {
                             assert_eq!(b.bounds(), Some([lo, hi]));
                             let _ = b.coords(point);
                         }
-                        Err(_) => assert!(!ok, "bounds {lo:?} {hi:?} refused"),
+                        Err(e) => {
+                            assert!(!ok, "bounds {lo:?} {hi:?} refused");
+                            let corners = [lo[0], lo[1], hi[0], hi[1]];
+                            let want = if corners.into_iter().all(in_limit) {
+                                Error::EmptyBounds
+                            } else {
+                                outside(Quantity::PlaneBounds)
+                            };
+                            assert_eq!(e, want, "bounds {lo:?} {hi:?}");
+                        }
                     }
                 }
-                Err(e) => assert!(!vec_in_limit(point) || normal == Vec3::ZERO, "{e}"),
+                Err(e) if !vec_in_limit(point) => assert_eq!(e, outside(Quantity::PlanePoint)),
+                Err(e) => assert_eq!(
+                    (e, normal),
+                    (
+                        Error::ZeroVector {
+                            quantity: Quantity::PlaneNormal
+                        },
+                        Vec3::ZERO
+                    )
+                ),
             }
 
             // [ASSERT: Err for invalid input] Light::new: position in range, 0 ≤ I ≤ 4.
             let (position, intensity) = (common::vec_any(src), common::fx_any(src));
             let ok =
                 vec_in_limit(position) && intensity >= Fx::ZERO && intensity <= Fx::from_num(4);
-            assert_eq!(
-                Light::new(position, intensity).is_ok(),
-                ok,
-                "{position:?} {intensity}"
-            );
+            let light = Light::new(position, intensity);
+            assert_eq!(light.is_ok(), ok, "{position:?} {intensity}");
+            if let Err(e) = light {
+                let want = if !vec_in_limit(position) {
+                    outside(Quantity::LightPosition)
+                } else {
+                    range(Quantity::LightIntensity, Fx::ZERO, Fx::from_num(4))
+                };
+                assert_eq!(e, want, "{position:?} {intensity}");
+            }
 
             // [ASSERT: Err for invalid input] Material::new and with_checker.
             let (d, s, r) = (
@@ -414,11 +486,30 @@ fn constructors_refuse_exactly_the_invalid_values() {
                 within(d, 2) && within(s, 16) && within(r, 1) && (1..=4096).contains(&shininess);
             let material = Material::new(Rgb::WHITE, d, s, shininess, r);
             assert_eq!(material.is_ok(), ok, "{d} {s} {shininess} {r}");
+            if let Err(e) = material {
+                // The first value outside its range, in the order of the arguments' checks.
+                let weight = |q, max: i32| range(q, Fx::ZERO, Fx::from_num(max));
+                let want = if !within(d, 2) {
+                    weight(Quantity::DiffuseWeight, 2)
+                } else if !within(s, 16) {
+                    weight(Quantity::SpecularWeight, 16)
+                } else if !within(r, 1) {
+                    weight(Quantity::Reflectivity, 1)
+                } else {
+                    range(Quantity::Shininess, Fx::ONE, Fx::from_num(4096))
+                };
+                assert_eq!(e, want, "{d} {s} {shininess} {r}");
+            }
             let size = common::fx_any(src);
             let checked = Material::matte(Rgb::BLACK).with_checker(size, Rgb::WHITE);
             assert_eq!(
-                checked.is_ok(),
-                size > Fx::ZERO && size <= LIMIT,
+                checked.map(|m| m.checker.map(|c| c.size)),
+                if size > Fx::ZERO && size <= LIMIT {
+                    Ok(Some(size))
+                } else {
+                    // Above zero: from the smallest positive Q16.16 value.
+                    Err(range(Quantity::CheckerSize, Fx::DELTA, LIMIT))
+                },
                 "checker {size}"
             );
             assert_eq!(Material::from(Rgb::WHITE), Material::matte(Rgb::WHITE));
@@ -428,8 +519,12 @@ fn constructors_refuse_exactly_the_invalid_values() {
             let light = Light::new_unchecked(Vec3::ZERO, Fx::ONE);
             let scene = Scene::<2, 2>::new(light, ambient, Rgb::BLACK);
             assert_eq!(
-                scene.is_ok(),
-                ambient >= Fx::ZERO && ambient <= Fx::ONE,
+                scene.as_ref().err().copied(),
+                (ambient < Fx::ZERO || ambient > Fx::ONE).then_some(range(
+                    Quantity::Ambient,
+                    Fx::ZERO,
+                    Fx::ONE
+                )),
                 "{ambient}"
             );
             if let Ok(mut scene) = scene {
@@ -710,7 +805,14 @@ fn numbers_saturate_instead_of_wrapping() {
                 "mul"
             );
             let in_limit = [a.x, a.y, a.z].iter().all(|&c| c >= -LIMIT && c <= LIMIT);
-            assert_eq!(a.check_range("a").is_ok(), in_limit);
+            assert_eq!(
+                a.check_range(Quantity::LightPosition),
+                if in_limit {
+                    Ok(a)
+                } else {
+                    Err(outside(Quantity::LightPosition))
+                }
+            );
             let _ = a.to_f64();
             let n = src.bits() >> src.below(64);
             let r = fixray::isqrt(n) as u128;

@@ -133,7 +133,7 @@ proptest! {
         let across = to_centre.cross(d(side));
         prop_assume!(across.length() > 1e-3 && to_centre.length() > r + 0.1);
         let aim = d(centre) + across / across.length() * (r + offset);
-        let Ok(dir) = Vec3::from_f32([(aim - d(origin)).x as f32, (aim - d(origin)).y as f32, (aim - d(origin)).z as f32], "aim") else {
+        let Ok(dir) = Vec3::from_f32([(aim - d(origin)).x as f32, (aim - d(origin)).y as f32, (aim - d(origin)).z as f32], fixray::Quantity::RayDirection) else {
             return Ok(());
         };
         let ray = Ray::new(origin, dir).unwrap();

@@ -78,7 +78,7 @@ impl<'a, const N: usize, const L: usize> Viewport<'a, N, L> {
     ///
     /// `area` must be exactly `camera.cols() × camera.rows()` pixels
     /// ([`Error::SizeMismatch`] otherwise), and its far corner must be a representable
-    /// display point ([`Error::OutOfRange`] otherwise).
+    /// display point ([`Error::ViewportOverflow`] otherwise).
     pub fn new(scene: &'a Scene<N, L>, camera: &'a Camera, area: Rectangle) -> Result<Self, Error> {
         let (cols, rows) = (camera.cols(), camera.rows());
         if area.size != Size::new(cols.into(), rows.into()) {
@@ -91,10 +91,7 @@ impl<'a, const N: usize, const L: usize> Viewport<'a, N, L> {
         let fits = area.top_left.x.checked_add(cols.into()).is_some()
             && area.top_left.y.checked_add(rows.into()).is_some();
         if !fits {
-            return Err(Error::OutOfRange {
-                what: "viewport position",
-                range: "display points whose far corner fits in i32",
-            });
+            return Err(Error::ViewportOverflow);
         }
         Ok(Viewport::at(scene, camera, area.top_left))
     }
@@ -124,8 +121,8 @@ impl<'a, const N: usize, const L: usize> Viewport<'a, N, L> {
     /// show); each `fill_contiguous` call sends as many rows as it holds, each cut to its
     /// visible columns. Rows off the display are skipped before they are traced. Rows past the
     /// picture's last are an error ([`Error::RowOutOfRange`], the last row asked for), a
-    /// buffer shorter than a row is one too ([`Error::SizeMismatch`], the buffer's length as
-    /// a width of one row), and an empty range draws nothing. The first driver error stops the
+    /// buffer shorter than a row is one too ([`Error::BufferLength`]), and an empty range
+    /// draws nothing. The first driver error stops the
     /// render and is returned as [`DrawError::Display`], unchanged.
     pub fn render_rows<D>(
         &self,
@@ -155,7 +152,7 @@ impl<'a, const N: usize, const L: usize> Viewport<'a, N, L> {
     /// display colour `C`, with a row buffer of its own, `W` pixels wide (on the stack while it
     /// draws: `3 · W` bytes).
     ///
-    /// A camera wider than `W` columns is [`Error::SizeMismatch`]; the check is here, so that
+    /// A camera wider than `W` columns is [`Error::BufferLength`]; the check is here, so that
     /// drawing can fail only in the driver.
     ///
     /// ```
@@ -174,13 +171,9 @@ impl<'a, const N: usize, const L: usize> Viewport<'a, N, L> {
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
     pub fn picture<C: FromRgb, const W: usize>(&self) -> Result<Picture<'a, C, W, N, L>, Error> {
-        let cols = self.camera.cols();
-        if usize::from(cols) > W {
-            return Err(Error::SizeMismatch {
-                camera: (cols, self.camera.rows()),
-                // W < cols ≤ u16::MAX.
-                target: (W as u16, 1),
-            });
+        let needed = usize::from(self.camera.cols());
+        if needed > W {
+            return Err(Error::BufferLength { needed, got: W });
         }
         Ok(Picture {
             view: *self,
@@ -238,10 +231,9 @@ impl<'a, const N: usize, const L: usize> Viewport<'a, N, L> {
             .unwrap_or(0)
             .min(usize::from(total));
         if band_rows == 0 {
-            return Err(Error::SizeMismatch {
-                camera: (cols, total),
-                // Shorter than one row, so below u16::MAX.
-                target: (buffer.len() as u16, 1),
+            return Err(Error::BufferLength {
+                needed: width,
+                got: buffer.len(),
             }
             .into());
         }

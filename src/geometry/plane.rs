@@ -1,6 +1,6 @@
 //! [`Plane`] and ray–plane intersection (section 4.3, Eq. 4.2).
 
-use crate::error::Error;
+use crate::error::{Error, Quantity};
 use crate::geometry::hit::Hit;
 use crate::geometry::ray::Ray;
 use crate::numbers::fx::{FAR, Fx};
@@ -20,18 +20,18 @@ impl Plane {
     /// A plane through `point` facing `normal` (normalised here).
     ///
     /// ```
-    /// use fixray::{Error, Plane, Vec3};
+    /// use fixray::{Error, Plane, Quantity, Vec3};
     /// let ground = Plane::new(Vec3::from_ints(0, -4, 0), Vec3::from_ints(0, 3, 0)).unwrap();
     /// assert_eq!(ground.normal(), Vec3::Y);
     /// assert_eq!(
     ///     Plane::new(Vec3::ZERO, Vec3::ZERO),
-    ///     Err(Error::ZeroVector { what: "plane normal" })
+    ///     Err(Error::ZeroVector { quantity: Quantity::PlaneNormal })
     /// );
     /// ```
     pub fn new(point: Vec3, normal: Vec3) -> Result<Self, Error> {
-        let point = point.check_range("plane point")?;
+        let point = point.check_range(Quantity::PlanePoint)?;
         let normal = normal.try_normalize().ok_or(Error::ZeroVector {
-            what: "plane normal",
+            quantity: Quantity::PlaneNormal,
         })?;
         Ok(Plane {
             point,
@@ -43,8 +43,11 @@ impl Plane {
     /// The same plane cut down to the rectangle `min ≤ (u, v) ≤ max` in its own coordinates
     /// ([`Plane::coords`]); rays that meet the plane outside it miss.
     ///
+    /// The corners must lie within ±[`LIMIT`](crate::LIMIT) ([`Error::OutOfRange`]) and `min`
+    /// below `max` on both axes ([`Error::EmptyBounds`]).
+    ///
     /// ```
-    /// use fixray::{Fx, Plane, Ray, Vec3};
+    /// use fixray::{Error, Fx, Plane, Ray, Vec3};
     /// let fx = Fx::from_num::<i32>;
     /// // The classic floor: y = −4 for |x| < 10 and −30 < z < −10.
     /// let floor = Plane::new(Vec3::from_ints(0, -4, 0), Vec3::Y).unwrap()
@@ -52,16 +55,18 @@ impl Plane {
     /// let down = |z: i16| Ray::new(Vec3::from_ints(0, 0, z), -Vec3::Y).unwrap();
     /// assert!(floor.intersect(&down(-20)).is_some());
     /// assert!(floor.intersect(&down(-5)).is_none());
+    /// // A strip of no width encloses nothing.
+    /// assert_eq!(
+    ///     Plane::new(Vec3::ZERO, Vec3::Y).unwrap().bounded([fx(0), fx(0)], [fx(0), fx(1)]),
+    ///     Err(Error::EmptyBounds)
+    /// );
     /// ```
     pub fn bounded(self, min: [Fx; 2], max: [Fx; 2]) -> Result<Self, Error> {
         for c in min.iter().chain(&max) {
-            crate::numbers::fx::check_range(*c, "plane bounds")?;
+            crate::numbers::fx::check_range(*c, Quantity::PlaneBounds)?;
         }
         if min[0] >= max[0] || min[1] >= max[1] {
-            return Err(Error::OutOfRange {
-                what: "plane bounds",
-                range: "min below max on both axes",
-            });
+            return Err(Error::EmptyBounds);
         }
         Ok(Plane {
             bounds: Some([min, max]),
@@ -233,8 +238,8 @@ mod tests {
 
     fn ray(o: [f32; 3], d: [f32; 3]) -> Ray {
         Ray::new(
-            Vec3::from_f32(o, "o").unwrap(),
-            Vec3::from_f32(d, "d").unwrap(),
+            Vec3::from_f32(o, Quantity::RayOrigin).unwrap(),
+            Vec3::from_f32(d, Quantity::RayDirection).unwrap(),
         )
         .unwrap()
     }

@@ -1,6 +1,6 @@
 //! [`Ray`]: the chapter's ray `x(t) = p_r + t·u_r` (Eq. 4.1).
 
-use crate::error::Error;
+use crate::error::{Error, Quantity};
 use crate::numbers::fx::Fx;
 use crate::numbers::vec3::Vec3;
 
@@ -33,9 +33,9 @@ impl Ray {
     /// assert_eq!(ray.at(Fx::from_num(3)), Vec3::from_ints(4, 1, 0));
     /// ```
     pub fn new(origin: Vec3, dir: Vec3) -> Result<Self, Error> {
-        let origin = origin.check_range("ray origin")?;
+        let origin = origin.check_range(Quantity::RayOrigin)?;
         let dir = dir.try_normalize().ok_or(Error::ZeroVector {
-            what: "ray direction",
+            quantity: Quantity::RayDirection,
         })?;
         Ok(Ray { origin, dir })
     }

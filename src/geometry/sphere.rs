@@ -2,7 +2,7 @@
 
 use core::cmp::Ordering;
 
-use crate::error::Error;
+use crate::error::{Error, Quantity};
 use crate::geometry::hit::Hit;
 use crate::geometry::ray::Ray;
 use crate::numbers::fx::{self, FAR, FRAC, Fx};
@@ -46,11 +46,11 @@ impl Sphere {
     /// );
     /// ```
     pub fn new(centre: Vec3, radius: Fx) -> Result<Self, Error> {
-        let centre = centre.check_range("sphere centre")?;
+        let centre = centre.check_range(Quantity::SphereCentre)?;
         if radius <= Fx::ZERO {
             return Err(Error::NonPositiveRadius);
         }
-        fx::check_range(radius, "sphere radius")?;
+        fx::check_range(radius, Quantity::SphereRadius)?;
         Ok(Sphere::new_unchecked(centre, radius))
     }
 
@@ -226,6 +226,7 @@ impl Sphere {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::numbers::fx::LIMIT;
 
     #[test]
     #[cfg(debug_assertions)]
@@ -365,19 +366,21 @@ mod tests {
             Sphere::new(Vec3::ZERO, Fx::from_num(-1)),
             Err(Error::NonPositiveRadius)
         );
-        assert!(matches!(
+        assert_eq!(
             Sphere::new(Vec3::from_ints(0, 2000, 0), Fx::ONE),
             Err(Error::OutOfRange {
-                what: "sphere centre",
-                ..
+                quantity: Quantity::SphereCentre,
+                min: -LIMIT,
+                max: LIMIT,
             })
-        ));
-        assert!(matches!(
+        );
+        assert_eq!(
             Sphere::new(Vec3::ZERO, Fx::from_num(1500)),
             Err(Error::OutOfRange {
-                what: "sphere radius",
-                ..
+                quantity: Quantity::SphereRadius,
+                min: -LIMIT,
+                max: LIMIT,
             })
-        ));
+        );
     }
 }

@@ -2,7 +2,7 @@
 
 use core::ops::{Add, Neg, Sub};
 
-use crate::error::Error;
+use crate::error::{Error, Quantity};
 use crate::numbers::fx::{self, Fx};
 use crate::numbers::isqrt::isqrt;
 use crate::numbers::reciprocal::rsqrt;
@@ -58,29 +58,37 @@ impl Vec3 {
 
     /// A vector from `f32` components, each checked to be finite and within ±[`LIMIT`](crate::LIMIT).
     ///
-    /// `what` names the vector in the error message.
+    /// `quantity` names the vector in the error.
     ///
     /// ```
-    /// use fixray::{Error, Vec3};
-    /// assert!(Vec3::from_f32([1.5, -4.0, -16.0], "centre").is_ok());
+    /// use fixray::{Error, Quantity, Vec3};
+    /// assert!(Vec3::from_f32([1.5, -4.0, -16.0], Quantity::SphereCentre).is_ok());
     /// assert_eq!(
-    ///     Vec3::from_f32([f32::NAN, 0.0, 0.0], "centre"),
-    ///     Err(Error::NotFinite { what: "centre" })
+    ///     Vec3::from_f32([f32::NAN, 0.0, 0.0], Quantity::SphereCentre),
+    ///     Err(Error::NotFinite { quantity: Quantity::SphereCentre })
     /// );
     /// ```
-    pub fn from_f32(v: [f32; 3], what: &'static str) -> Result<Self, Error> {
+    pub fn from_f32(v: [f32; 3], quantity: Quantity) -> Result<Self, Error> {
         Ok(Vec3::new(
-            fx::fx_from_f32(v[0], what)?,
-            fx::fx_from_f32(v[1], what)?,
-            fx::fx_from_f32(v[2], what)?,
+            fx::fx_from_f32(v[0], quantity)?,
+            fx::fx_from_f32(v[1], quantity)?,
+            fx::fx_from_f32(v[2], quantity)?,
         ))
     }
 
-    /// Checks that every component lies within ±[`LIMIT`](crate::LIMIT).
-    pub fn check_range(self, what: &'static str) -> Result<Self, Error> {
-        fx::check_range(self.x, what)?;
-        fx::check_range(self.y, what)?;
-        fx::check_range(self.z, what)?;
+    /// Checks that every component lies within ±[`LIMIT`](crate::LIMIT), else
+    /// [`Error::OutOfRange`] naming `quantity`.
+    pub const fn check_range(self, quantity: Quantity) -> Result<Self, Error> {
+        // `?` is not allowed in a `const fn`.
+        if let Err(e) = fx::check_range(self.x, quantity) {
+            return Err(e);
+        }
+        if let Err(e) = fx::check_range(self.y, quantity) {
+            return Err(e);
+        }
+        if let Err(e) = fx::check_range(self.z, quantity) {
+            return Err(e);
+        }
         Ok(self)
     }
 
@@ -344,7 +352,7 @@ mod tests {
     use super::*;
 
     fn v(x: f32, y: f32, z: f32) -> Vec3 {
-        Vec3::from_f32([x, y, z], "v").unwrap()
+        Vec3::from_f32([x, y, z], Quantity::RayOrigin).unwrap()
     }
 
     #[test]

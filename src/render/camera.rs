@@ -2,7 +2,7 @@
 
 use micromath::F32Ext;
 
-use crate::error::Error;
+use crate::error::{CameraProblem, Error, Quantity, within};
 use crate::geometry::ray::Ray;
 use crate::numbers::fx::{FRAC, Fx};
 use crate::numbers::isqrt::isqrt;
@@ -24,10 +24,6 @@ pub const MAX_PIXELS: u16 = 4096;
 /// screen's centre moves the ray by `δ·(F² + r²)/F` pixels on the screen, at most
 /// 2⁻¹⁵ · B = ½. Narrow fields of view meet the budget at `F ≈ B`, wide ones at `F ≈ R²/B`.
 const RAY_BUDGET_PX: u32 = 16_384;
-
-/// The range of a camera's `f32` lengths, as errors state it: at least one Q16.16 step
-/// after rounding, at most 1024.
-const CAMERA_RANGE: &str = "2⁻¹⁶ (one Q16.16 step) to 1024";
 
 /// A camera: a viewpoint and a screen of `cols × rows` pixels in front of it.
 ///
@@ -78,44 +74,31 @@ pub struct Camera {
 
 fn check_resolution(cols: u16, rows: u16) -> Result<(), Error> {
     if cols == 0 || rows == 0 {
-        return Err(Error::DegenerateCamera {
-            why: "the screen has no pixels",
-        });
+        return Err(Error::DegenerateCamera(CameraProblem::NoPixels));
     }
     if cols > MAX_PIXELS || rows > MAX_PIXELS {
-        return Err(Error::DegenerateCamera {
-            why: "the screen is wider or taller than 4096 pixels",
-        });
+        return Err(Error::DegenerateCamera(CameraProblem::TooManyPixels));
     }
     Ok(())
 }
 
-/// A positive, finite `f32` setup length, converted to Q16.16: at most `max` (at most 1024),
-/// and not so small that it rounds to zero.
+/// A positive, finite `f32` setup length, converted to Q16.16: at most 1024, and not so small
+/// that it rounds to zero (the range 2⁻¹⁶ to 1024 of [`Error::OutOfRange`]).
 ///
 /// The range is checked here, where `value` is known to be positive, rather than by the
 /// general `fx_from_f32_within`: with constant inputs (a firmware's fixed pinhole camera) the
 /// pinhole's whole set-up, ray budget included, then folds away at compile time.
-fn positive(value: f32, max: f32, what: &'static str) -> Result<Fx, Error> {
+fn positive(value: f32, quantity: Quantity) -> Result<Fx, Error> {
     if !value.is_finite() {
-        return Err(Error::NotFinite { what });
+        return Err(Error::NotFinite { quantity });
     }
-    if value <= 0.0 {
-        return Err(Error::DegenerateCamera { why: what });
+    let (min, max) = (Fx::DELTA, crate::LIMIT);
+    if value <= 0.0 || value > 1024.0 {
+        return Err(Error::OutOfRange { quantity, min, max });
     }
-    let out_of_range = Error::OutOfRange {
-        what,
-        range: CAMERA_RANGE,
-    };
-    if value > max {
-        return Err(out_of_range);
-    }
-    // Finite and within (0, 1024]: the conversion cannot overflow.
-    let rounded = Fx::from_num(value);
-    if rounded == Fx::ZERO {
-        return Err(out_of_range);
-    }
-    Ok(rounded)
+    // Finite and within (0, 1024]: the conversion cannot overflow, and only rounding to zero
+    // can leave the range.
+    within(Fx::from_num(value), min, max, quantity)
 }
 
 /// A view distance of `view` pixels, worked out in `f32` at set-up, in Q16.16.
@@ -155,9 +138,7 @@ fn check_budget(view: Fx, aspect: Fx, cols: u16, rows: u16) -> Result<(), Error>
     // The limits: F² − B·F + R² ≤ 0 between the roots (B ∓ √(B² − 4R²))/2, real only while
     // 4R² ≤ B² (2⁶⁰ in these units).
     let Some(discriminant) = (budget * budget).checked_sub(across) else {
-        return Err(Error::DegenerateCamera {
-            why: "the screen is more than 16 384 pixels across its diagonal (pixels too tall)",
-        });
+        return Err(Error::DegenerateCamera(CameraProblem::DiagonalTooLong));
     };
     // Twice the far root, B + √(B² − 4R²), in 2⁻¹⁸ px (below 2³⁴): the discriminant is below
     // 2⁶⁰, so four more bits of root fit. Its floor moves the limits by less than 10⁻⁵
@@ -284,7 +265,7 @@ impl Camera {
     /// too wide a field of view for its number of pixels is refused with the limit.
     ///
     /// ```
-    /// use fixray::{Camera, Error, Vec3};
+    /// use fixray::{Camera, Error, Quantity, Vec3};
     /// // The chapter's M = 3 by N = 5 screen, 5 × 3 units wide and high, one unit away.
     /// let cam = Camera::pinhole(5.0, 3.0, 1.0, 3, 5).unwrap();
     /// // Chapter pixel (0, 0) is bottom left: display row 2, column 0.
@@ -292,23 +273,21 @@ impl Camera {
     /// // A screen a millionth of a pixel from the eye has no view.
     /// assert!(matches!(
     ///     Camera::pinhole(1.0, 1.0, 1e-6, 1, 1),
-    ///     Err(Error::OutOfRange { what: "screen distance", .. })
+    ///     Err(Error::OutOfRange { quantity: Quantity::ScreenDistance, .. })
     /// ));
     /// ```
     pub fn pinhole(w: f32, h: f32, z_p: f32, rows: u16, cols: u16) -> Result<Self, Error> {
         check_resolution(cols, rows)?;
-        positive(w, 1024.0, "screen width")?;
-        positive(h, 1024.0, "screen height")?;
-        let screen = positive(z_p, 1024.0, "screen distance")?;
+        positive(w, Quantity::ScreenWidth)?;
+        positive(h, Quantity::ScreenHeight)?;
+        let screen = positive(z_p, Quantity::ScreenDistance)?;
         let pitch_x = w / cols as f32;
         let pitch_y = h / rows as f32;
-        positive(pitch_x, 1024.0, "pixel width (screen width / cols)")?;
-        positive(pitch_y, 1024.0, "pixel height (screen height / rows)")?;
+        positive(pitch_x, Quantity::PixelWidth)?;
+        positive(pitch_y, Quantity::PixelHeight)?;
         let aspect = pitch_y / pitch_x;
         if !(0.25..=4.0).contains(&aspect) {
-            return Err(Error::DegenerateCamera {
-                why: "pixels more than four times taller than wide, or wider than tall",
-            });
+            return Err(Error::DegenerateCamera(CameraProblem::PixelAspect));
         }
         // Within 1/4..4, so finite: the conversion cannot overflow.
         let down = Fx::from_num(aspect);
@@ -345,11 +324,11 @@ impl Camera {
     /// 100 % to 99.97 % and raise the largest channel error from 1 to 4.)
     ///
     /// ```
-    /// use fixray::{Camera, Error};
+    /// use fixray::{Camera, CameraProblem, Error};
     /// let cam = Camera::look_at([0.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0], 60.0, 160, 128);
     /// assert!(cam.is_ok());
     /// let bad = Camera::look_at([0.0; 3], [0.0, 5.0, 0.0], [0.0, 1.0, 0.0], 60.0, 160, 128);
-    /// assert!(matches!(bad, Err(Error::DegenerateCamera { .. })));
+    /// assert_eq!(bad, Err(Error::DegenerateCamera(CameraProblem::UpAlongView)));
     /// // A telephoto view of half a degree needs fewer rows than 240.
     /// let narrow = Camera::look_at([0.0; 3], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0], 0.5, 320, 240);
     /// assert_eq!(narrow, Err(Error::FieldOfViewTooNarrow { min_millidegrees: 840 }));
@@ -363,33 +342,27 @@ impl Camera {
         rows: u16,
     ) -> Result<Self, Error> {
         check_resolution(cols, rows)?;
-        let eye = Vec3::from_f32(eye, "camera eye")?;
-        let target = Vec3::from_f32(target, "camera target")?;
-        let up = Vec3::from_f32(up, "camera up")?;
+        let eye = Vec3::from_f32(eye, Quantity::CameraEye)?;
+        let target = Vec3::from_f32(target, Quantity::CameraTarget)?;
+        let up = Vec3::from_f32(up, Quantity::CameraUp)?;
         if !fov_y_degrees.is_finite() {
             return Err(Error::NotFinite {
-                what: "field of view",
+                quantity: Quantity::FieldOfView,
             });
         }
         if !(fov_y_degrees > 0.0 && fov_y_degrees < 180.0) {
-            return Err(Error::DegenerateCamera {
-                why: "field of view must lie strictly between 0 and 180 degrees",
-            });
+            return Err(Error::DegenerateCamera(CameraProblem::FieldOfView));
         }
         let forward = (target - eye)
             .try_normalize()
-            .ok_or(Error::DegenerateCamera {
-                why: "target is the eye",
-            })?;
-        let up = up.try_normalize().ok_or(Error::DegenerateCamera {
-            why: "up is the zero vector",
-        })?;
+            .ok_or(Error::DegenerateCamera(CameraProblem::TargetIsEye))?;
+        let up = up
+            .try_normalize()
+            .ok_or(Error::DegenerateCamera(CameraProblem::UpIsZero))?;
         let side = forward.cross(up);
         // Unit vectors closer than about 0.2° to parallel do not define a picture's up.
         if side.length() < Fx::from_bits(1 << (FRAC - 8)) {
-            return Err(Error::DegenerateCamera {
-                why: "up is parallel to the view direction",
-            });
+            return Err(Error::DegenerateCamera(CameraProblem::UpAlongView));
         }
         let right = side.try_normalize().unwrap_or(Vec3::X);
         let down = -right.cross(forward);
@@ -431,19 +404,17 @@ impl Camera {
         cols: u16,
         rows: u16,
     ) -> Result<Self, Error> {
-        for (value, what) in [
-            (distance, "orbit distance"),
-            (yaw_degrees, "orbit yaw"),
-            (pitch_degrees, "orbit pitch"),
+        for (value, quantity) in [
+            (distance, Quantity::OrbitDistance),
+            (yaw_degrees, Quantity::OrbitYaw),
+            (pitch_degrees, Quantity::OrbitPitch),
         ] {
             if !value.is_finite() {
-                return Err(Error::NotFinite { what });
+                return Err(Error::NotFinite { quantity });
             }
         }
         if !(pitch_degrees > -90.0 && pitch_degrees < 90.0) {
-            return Err(Error::DegenerateCamera {
-                why: "orbit pitch must lie strictly between -90 and 90 degrees",
-            });
+            return Err(Error::DegenerateCamera(CameraProblem::OrbitPitch));
         }
         let (yaw, pitch) = (yaw_degrees.to_radians(), pitch_degrees.to_radians());
         let flat = distance * F32Ext::cos(pitch);
@@ -684,7 +655,7 @@ mod tests {
             for j in 0..5u16 {
                 let expect = Vec3::from_f32(
                     [-2.5 + (j as f32 + 0.5), -1.5 + (i as f32 + 0.5), -1.0],
-                    "p",
+                    Quantity::PlanePoint,
                 )
                 .unwrap();
                 assert_eq!(
@@ -843,7 +814,10 @@ mod tests {
             for (view, narrow) in [(RAY_BUDGET_PX << FRAC | 1, true), (1, false)] {
                 let found = check_budget(Fx::from_bits(view as i32), aspect, cols, rows);
                 let Some(exact) = limit_in_f64(aspect, cols, rows, narrow) else {
-                    assert!(matches!(found, Err(Error::DegenerateCamera { .. })));
+                    assert_eq!(
+                        found,
+                        Err(Error::DegenerateCamera(CameraProblem::DiagonalTooLong))
+                    );
                     degenerate += 1;
                     continue;
                 };
@@ -957,9 +931,7 @@ mod tests {
         let err = |r: Result<Camera, Error>| r.unwrap_err();
         assert!(matches!(
             err(Camera::look_at([1.0; 3], [1.0; 3], up, 60.0, 4, 4)),
-            Error::DegenerateCamera {
-                why: "target is the eye"
-            }
+            Error::DegenerateCamera(CameraProblem::TargetIsEye)
         ));
         assert!(matches!(
             err(Camera::look_at(
@@ -970,11 +942,11 @@ mod tests {
                 4,
                 4
             )),
-            Error::DegenerateCamera { .. }
+            Error::DegenerateCamera(CameraProblem::UpIsZero)
         ));
         assert!(matches!(
             err(Camera::look_at([0.0; 3], [0.0, 0.0, -1.0], up, 0.0, 4, 4)),
-            Error::DegenerateCamera { .. }
+            Error::DegenerateCamera(CameraProblem::FieldOfView)
         ));
         assert!(matches!(
             err(Camera::look_at(
@@ -985,19 +957,26 @@ mod tests {
                 4,
                 4
             )),
-            Error::NotFinite { .. }
+            Error::NotFinite {
+                quantity: Quantity::FieldOfView
+            }
         ));
         assert!(matches!(
             err(Camera::look_at([0.0; 3], [0.0, 0.0, -1.0], up, 60.0, 0, 4)),
-            Error::DegenerateCamera { .. }
+            Error::DegenerateCamera(CameraProblem::NoPixels)
         ));
         assert!(matches!(
             err(Camera::pinhole(-1.0, 1.0, 1.0, 4, 4)),
-            Error::DegenerateCamera { .. }
+            Error::OutOfRange {
+                quantity: Quantity::ScreenWidth,
+                ..
+            }
         ));
         assert!(matches!(
             err(Camera::pinhole(1.0, 1.0, f32::INFINITY, 4, 4)),
-            Error::NotFinite { .. }
+            Error::NotFinite {
+                quantity: Quantity::ScreenDistance
+            }
         ));
     }
 }

@@ -13,16 +13,23 @@ use crate::scene::colour::Rgb;
 /// Renders display row `row` (0 at the top) into `out`, one colour per column.
 ///
 /// This is the streaming form: RAM for one row, so a chip that cannot hold a frame can send
-/// each row to its display as it is finished. `out` must hold exactly `camera.cols()` pixels and
-/// `row` must be below `camera.rows()`.
+/// each row to its display as it is finished. `row` must be below `camera.rows()`
+/// ([`Error::RowOutOfRange`]) and `out` must hold exactly `camera.cols()` pixels
+/// ([`Error::BufferLength`]).
 ///
 /// ```
-/// use fixray::{demo, render_row, Rgb};
+/// use fixray::{demo, render_row, Error, Rgb};
 /// let (scene, camera) = (demo::scene(), demo::camera(16, 8).unwrap());
 /// let mut row = [Rgb::BLACK; 16];
 /// render_row(&scene, &camera, 7, &mut row).unwrap();
 /// // The bottom row of the demo looks down at the ground plane, not the sky.
 /// assert_ne!(row[0], demo::BACKGROUND);
+/// // A buffer that is not one row long is refused, whether short or long.
+/// let mut long = [Rgb::BLACK; 17];
+/// assert_eq!(
+///     render_row(&scene, &camera, 7, &mut long),
+///     Err(Error::BufferLength { needed: 16, got: 17 })
+/// );
 /// ```
 pub fn render_row<const N: usize, const L: usize>(
     scene: &Scene<N, L>,
@@ -196,15 +203,15 @@ pub fn render_row_supersampled<const N: usize, const L: usize>(
     Ok(())
 }
 
-/// Refuses a row outside the screen ([`Error::RowOutOfRange`]), then a row buffer of the
-/// wrong width: a [`Error::SizeMismatch`] whose target has the buffer's length for columns
-/// and the camera's rows, so that only the columns differ.
+/// Refuses a row outside the screen ([`Error::RowOutOfRange`]), then a row buffer that is
+/// not exactly one row long ([`Error::BufferLength`]).
 fn check_row(camera: &Camera, row: u16, out: &[Rgb]) -> Result<(), Error> {
     camera.check_row(row)?;
-    if out.len() != camera.cols() as usize {
-        return Err(Error::SizeMismatch {
-            camera: (camera.cols(), camera.rows()),
-            target: (out.len().min(u16::MAX as usize) as u16, camera.rows()),
+    let needed = usize::from(camera.cols());
+    if out.len() != needed {
+        return Err(Error::BufferLength {
+            needed,
+            got: out.len(),
         });
     }
     Ok(())

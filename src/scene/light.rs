@@ -1,6 +1,6 @@
 //! [`Light`]: a point light.
 
-use crate::error::Error;
+use crate::error::{Error, Quantity, within};
 use crate::numbers::fx::Fx;
 use crate::numbers::vec3::Vec3;
 
@@ -21,13 +21,13 @@ pub struct Light {
 impl Light {
     /// A light, checked: position within ±[`LIMIT`](crate::LIMIT), intensity within 0..=4.
     pub fn new(position: Vec3, intensity: Fx) -> Result<Self, Error> {
-        let position = position.check_range("light position")?;
-        if intensity < Fx::ZERO || intensity > Fx::const_from_int(4) {
-            return Err(Error::OutOfRange {
-                what: "light intensity",
-                range: "0 to 4",
-            });
-        }
+        let position = position.check_range(Quantity::LightPosition)?;
+        let intensity = within(
+            intensity,
+            Fx::ZERO,
+            Fx::const_from_int(4),
+            Quantity::LightIntensity,
+        )?;
         Ok(Light {
             position,
             intensity,
@@ -50,17 +50,5 @@ impl Light {
             position,
             intensity,
         }
-    }
-}
-
-/// Refuses a weight outside 0..=1.
-pub(crate) fn unit_interval(value: Fx, what: &'static str) -> Result<Fx, Error> {
-    if value < Fx::ZERO || value > Fx::ONE {
-        Err(Error::OutOfRange {
-            what,
-            range: "0 to 1",
-        })
-    } else {
-        Ok(value)
     }
 }

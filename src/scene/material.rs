@@ -1,8 +1,11 @@
 //! [`Material`]: how a surface answers light, and [`Checker`], a two-colour pattern.
 
-use crate::error::Error;
+use crate::error::{Error, Quantity, within};
 use crate::numbers::fx::Fx;
 use crate::scene::colour::Rgb;
+
+/// The largest shininess [`Material::new`] accepts.
+const MAX_SHININESS: u16 = 4096;
 
 /// How a surface shades: Lambert diffuse, Blinn-Phong specular and mirror reflection.
 ///
@@ -50,11 +53,14 @@ impl Material {
     /// A material, checked against the ranges above.
     ///
     /// ```
-    /// use fixray::{Error, Fx, Material, Rgb};
+    /// use fixray::{Error, Fx, Material, Quantity, Rgb};
     /// let ivory = Material::new(Rgb::new(102, 102, 77), Fx::from_num(0.6), Fx::from_num(0.3), 50, Fx::from_num(0.1));
     /// assert!(ivory.is_ok());
     /// let bad = Material::new(Rgb::WHITE, Fx::ONE, Fx::ZERO, 0, Fx::ZERO);
-    /// assert!(matches!(bad, Err(Error::OutOfRange { what: "shininess", .. })));
+    /// assert_eq!(
+    ///     bad,
+    ///     Err(Error::OutOfRange { quantity: Quantity::Shininess, min: Fx::ONE, max: Fx::from_num(4096) })
+    /// );
     /// ```
     pub fn new(
         colour: Rgb,
@@ -63,18 +69,17 @@ impl Material {
         shininess: u16,
         reflect: Fx,
     ) -> Result<Self, Error> {
-        within(diffuse, Fx::const_from_int(2), "diffuse weight", "0 to 2")?;
-        within(
-            specular,
-            Fx::const_from_int(16),
-            "specular weight",
-            "0 to 16",
-        )?;
-        within(reflect, Fx::ONE, "reflectivity", "0 to 1")?;
-        if !(1..=4096).contains(&shininess) {
+        let weight = |value, max, quantity| within(value, Fx::ZERO, max, quantity);
+        weight(diffuse, Fx::const_from_int(2), Quantity::DiffuseWeight)?;
+        weight(specular, Fx::const_from_int(16), Quantity::SpecularWeight)?;
+        weight(reflect, Fx::ONE, Quantity::Reflectivity)?;
+        // A u16 may exceed Q16.16's 32 767, so the exponent is compared as an integer; its
+        // bounds, 1 and 4096, are whole Q16.16 values for the error.
+        if !(1..=MAX_SHININESS).contains(&shininess) {
             return Err(Error::OutOfRange {
-                what: "shininess",
-                range: "1 to 4096",
+                quantity: Quantity::Shininess,
+                min: Fx::ONE,
+                max: Fx::const_from_int(MAX_SHININESS as i32),
             });
         }
         Ok(Material {
@@ -90,12 +95,8 @@ impl Material {
     /// The same material with a checkerboard of `size`-wide squares alternating its colour
     /// with `other`.
     pub fn with_checker(self, size: Fx, other: Rgb) -> Result<Self, Error> {
-        if size <= Fx::ZERO || size > crate::LIMIT {
-            return Err(Error::OutOfRange {
-                what: "checker size",
-                range: "above 0 and at most 1024",
-            });
-        }
+        // Above zero: the smallest Q16.16 value above it is one step.
+        within(size, Fx::DELTA, crate::LIMIT, Quantity::CheckerSize)?;
         Ok(Material {
             checker: Some(Checker { size, other }),
             ..self
@@ -138,13 +139,5 @@ impl Checker {
         } else {
             self.other
         }
-    }
-}
-
-fn within(value: Fx, max: Fx, what: &'static str, range: &'static str) -> Result<Fx, Error> {
-    if value < Fx::ZERO || value > max {
-        Err(Error::OutOfRange { what, range })
-    } else {
-        Ok(value)
     }
 }

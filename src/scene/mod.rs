@@ -14,13 +14,12 @@ pub use material::{Checker, Material};
 
 use heapless::Vec;
 
-use crate::error::Error;
+use crate::error::{Error, Quantity, within};
 use crate::geometry::plane::Plane;
 use crate::geometry::shape::Shape;
 use crate::geometry::sphere::Sphere;
 use crate::numbers::fx::Fx;
 use crate::scene::cone::ShadowCone;
-use crate::scene::light::unit_interval;
 
 /// A shape and what it is made of.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -92,7 +91,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
             objects: Vec::new(),
             cones: [[ShadowCone::ALWAYS; N]; L],
             lights: Vec::new(),
-            ambient: unit_interval(ambient, "ambient light")?,
+            ambient: within(ambient, Fx::ZERO, Fx::ONE, Quantity::Ambient)?,
             background: background.into(),
             shadows: true,
             depth: Self::DEFAULT_DEPTH,
@@ -226,7 +225,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
 
     /// Sets the ambient light, 0 to 1.
     pub fn set_ambient(&mut self, ambient: Fx) -> Result<(), Error> {
-        self.ambient = unit_interval(ambient, "ambient light")?;
+        self.ambient = within(ambient, Fx::ZERO, Fx::ONE, Quantity::Ambient)?;
         Ok(())
     }
 

@@ -51,13 +51,14 @@ fn misses_show_the_background() {
 #[test]
 fn ambient_outside_zero_to_one_is_refused() {
     let light = Light::new(Vec3::ZERO, Fx::ONE).unwrap();
-    assert!(matches!(
-        Scene::<1>::new(light, Fx::from_num(1.5), Rgb::BLACK),
+    assert_eq!(
+        Scene::<1>::new(light, Fx::from_num(1.5), Rgb::BLACK).map(|_| ()),
         Err(Error::OutOfRange {
-            what: "ambient light",
-            ..
+            quantity: Quantity::Ambient,
+            min: Fx::ZERO,
+            max: Fx::ONE,
         })
-    ));
+    );
 }
 
 #[test]
