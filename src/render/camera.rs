@@ -438,7 +438,6 @@ impl Camera {
     /// ));
     /// # Ok::<(), Error>(())
     /// ```
-    #[must_use]
     pub const fn pinhole(screen_w: f32, screen_h: f32, distance: f32) -> Pinhole {
         Pinhole {
             screen_w,
@@ -489,7 +488,6 @@ impl Camera {
     ///     .build();
     /// assert_eq!(narrow, Err(Error::FieldOfViewTooNarrow { min_millidegrees: 840 }));
     /// ```
-    #[must_use]
     pub const fn look_at(eye: [f32; 3], target: [f32; 3]) -> LookAt {
         LookAt {
             eye,
@@ -520,7 +518,6 @@ impl Camera {
     /// assert!(overhead.size(Size::new(160, 128)).build().is_err());
     /// # Ok::<(), fixray::Error>(())
     /// ```
-    #[must_use]
     pub const fn orbit(target: [f32; 3], distance: f32) -> Orbit {
         Orbit {
             target,
