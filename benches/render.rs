@@ -10,8 +10,8 @@ use fixray::{Framebuffer, Rgb, demo, render};
 use fixray_reference::{self as reference, DScene};
 use std::hint::black_box;
 
-const W: u16 = 160;
-const H: u16 = 128;
+const W: u32 = 160;
+const H: u32 = 128;
 
 fn frame(c: &mut Criterion) {
     let scene = demo::scene();

@@ -34,13 +34,13 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         );
     }
     let demo_scene = demo::scene();
-    for (cols, rows) in [(160u16, 128u16), (320, 240), (80, 64), (128, 64)] {
+    for (cols, rows) in [(160u32, 128u32), (320, 240), (80, 64), (128, 64)] {
         let camera = demo::camera(cols, rows)?;
         let dcamera = demo_camera(cols, rows).ok_or("demo camera")?;
         row("demo (pinhole)", &demo_scene, &camera, &dcamera, None)?;
     }
     let classic = demo::classic();
-    for (cols, rows) in [(160u16, 128u16), (320, 240)] {
+    for (cols, rows) in [(160u32, 128u32), (320, 240)] {
         let camera = demo::classic_camera(cols, rows)?;
         let dcamera = classic_camera(cols, rows).ok_or("classic camera")?;
         let path = diff.as_deref().filter(|_| cols == 160);
@@ -57,7 +57,7 @@ fn row(
     diff: Option<&str>,
 ) -> Result<(), Box<dyn std::error::Error>> {
     let dscene = DScene::from_scene(scene).ok_or("the scene has no f64 twin")?;
-    let (cols, rows) = (camera.cols(), camera.rows());
+    let (cols, rows) = (camera.width(), camera.height());
     let mut image = Vec::with_capacity(cols as usize * rows as usize * 3);
     let a = Accuracy::measure_each(scene, camera, &dscene, dcamera, |_, _, seen, reference| {
         for (s, r) in [

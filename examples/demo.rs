@@ -35,7 +35,7 @@ fn main() -> ExitCode {
 fn run(path: &str) -> Result<(), Box<dyn std::error::Error>> {
     let scene = demo::scene();
     let mut frame = Box::new(Framebuffer::<W, H>::new());
-    render(&scene, &demo::camera(W as u16, H as u16)?, &mut frame)?;
+    render(&scene, &demo::camera(W as u32, H as u32)?, &mut frame)?;
 
     // The terminal gets a half-size render of its own: 80 columns fit any terminal.
     let mut small = Framebuffer::<80, 64>::new();

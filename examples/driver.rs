@@ -58,7 +58,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     assert_eq!(panel.pixels_written, pixels, "pixels sent over the bus");
     let mut row = [Rgb::BLACK; SIZE as usize];
     for y in 0..SIZE {
-        render_row(&scene, &camera, y, &mut row)?;
+        render_row(&scene, &camera, y.into(), &mut row)?;
         for (x, pixel) in row.iter().enumerate() {
             let expected = Rgb565::from(Rgb888::new(pixel.r, pixel.g, pixel.b));
             let shown = panel.memory[usize::from(y) * usize::from(SIZE) + x];

@@ -18,7 +18,7 @@ use std::process::ExitCode;
 use std::time::{Duration, Instant};
 
 use embedded_graphics::pixelcolor::{BinaryColor, Gray8, Rgb565, Rgb888};
-use embedded_graphics::prelude::{PixelColor, Point, Size};
+use embedded_graphics::prelude::{PixelColor, Point};
 use embedded_graphics_simulator::{OutputSettings, SimulatorDisplay};
 use fixray::{Camera, DrawError, FromRgb, MAX_PIXELS, Rgb, Scene, Viewport, demo};
 
@@ -77,7 +77,7 @@ impl Which {
     }
 
     /// The scene's own camera, looking from the origin down −z.
-    fn camera(self, cols: u16, rows: u16) -> Result<Camera, fixray::Error> {
+    fn camera(self, cols: u32, rows: u32) -> Result<Camera, fixray::Error> {
         match self {
             Which::Demo => demo::camera(cols, rows),
             Which::Classic => demo::classic_camera(cols, rows),
@@ -90,8 +90,8 @@ impl Which {
 struct Options {
     scene: Which,
     png: Option<PathBuf>,
-    cols: u16,
-    rows: u16,
+    cols: u32,
+    rows: u32,
     format: Format,
 }
 
@@ -148,13 +148,13 @@ fn parse(args: impl IntoIterator<Item = String>) -> Result<Option<Options>, Stri
     Ok(Some(options))
 }
 
-fn parse_size(text: &str) -> Result<(u16, u16), String> {
+fn parse_size(text: &str) -> Result<(u32, u32), String> {
     let bad = || {
         format!("--size wants WIDTHxHEIGHT, 1 to {MAX_PIXELS} a side (like 160x128), not '{text}'")
     };
     let (w, h) = text.split_once(['x', 'X']).ok_or_else(bad)?;
     let side = |s: &str| {
-        s.parse::<u16>()
+        s.parse::<u32>()
             .ok()
             .filter(|&n| (1..=MAX_PIXELS).contains(&n))
     };
@@ -170,13 +170,12 @@ fn render<C>(
 where
     C: FromRgb + From<BinaryColor>,
 {
-    let mut display =
-        SimulatorDisplay::<C>::new(Size::new(camera.cols().into(), camera.rows().into()));
+    let mut display = SimulatorDisplay::<C>::new(camera.size());
     let view = Viewport::at(scene, camera, Point::zero());
     // One row of RAM, as on a microcontroller: 3 bytes a column.
     let mut row = [Rgb::BLACK; MAX_PIXELS as usize];
     let start = Instant::now();
-    view.render(&mut row[..camera.cols().into()], &mut display)?;
+    view.render(&mut row[..camera.width() as usize], &mut display)?;
     Ok((display, start.elapsed()))
 }
 

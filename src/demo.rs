@@ -7,6 +7,8 @@
 //!   and a checkerboard floor — the geometry of ssloy's tinyraytracer — seen by the look-at
 //!   camera ([`classic_camera`]).
 
+use embedded_graphics::geometry::Size;
+
 use crate::error::{CameraProblem, Error};
 use crate::geometry::plane::Plane;
 use crate::geometry::sphere::Sphere;
@@ -61,14 +63,17 @@ pub const SCREEN_HEIGHT: f32 = 2.0;
 /// Screen distance of the demo camera: √3.
 pub const SCREEN_DISTANCE: f32 = 1.732_050_8;
 
-/// The demo camera at `cols × rows`: the chapter's pinhole camera with square pixels, a
-/// screen `2 · cols / rows` wide and [`SCREEN_HEIGHT`] high at [`SCREEN_DISTANCE`].
-pub fn camera(cols: u16, rows: u16) -> Result<Camera, Error> {
-    if rows == 0 {
+/// The demo camera, `width × height` pixels: the chapter's pinhole camera with square
+/// pixels, a screen `2 · width / height` wide and [`SCREEN_HEIGHT`] high at
+/// [`SCREEN_DISTANCE`].
+pub fn camera(width: u32, height: u32) -> Result<Camera, Error> {
+    if height == 0 {
         return Err(Error::DegenerateCamera(CameraProblem::NoPixels));
     }
-    let width = SCREEN_HEIGHT * cols as f32 / rows as f32;
-    Camera::pinhole(width, SCREEN_HEIGHT, SCREEN_DISTANCE, rows, cols)
+    let screen_w = SCREEN_HEIGHT * width as f32 / height as f32;
+    Camera::pinhole(screen_w, SCREEN_HEIGHT, SCREEN_DISTANCE)
+        .size(Size::new(width, height))
+        .build()
 }
 
 /// The classic scene: tinyraytracer's spheres at (−3, 0, −16) r 2 (ivory), (−1, −1.5, −12) r 2
@@ -136,15 +141,11 @@ pub fn classic() -> Scene<8> {
 /// Vertical field of view of the classic camera, as in tinyraytracer.
 pub const CLASSIC_FOV_DEGREES: f32 = 60.0;
 
-/// The classic camera at `cols × rows`: the look-at camera at the origin, looking down −z,
-/// with a [`CLASSIC_FOV_DEGREES`] vertical field of view.
-pub fn classic_camera(cols: u16, rows: u16) -> Result<Camera, Error> {
-    Camera::look_at(
-        [0.0, 0.0, 0.0],
-        [0.0, 0.0, -1.0],
-        [0.0, 1.0, 0.0],
-        CLASSIC_FOV_DEGREES,
-        cols,
-        rows,
-    )
+/// The classic camera, `width × height` pixels: the look-at camera at the origin, looking
+/// down −z, with a [`CLASSIC_FOV_DEGREES`] vertical field of view.
+pub fn classic_camera(width: u32, height: u32) -> Result<Camera, Error> {
+    Camera::look_at([0.0, 0.0, 0.0], [0.0, 0.0, -1.0])
+        .fov_degrees(CLASSIC_FOV_DEGREES)
+        .size(Size::new(width, height))
+        .build()
 }

@@ -83,14 +83,17 @@ mod scene;
 mod xorshift;
 
 pub use draw::{DrawError, FromRgb, Picture, Viewport};
+/// The size type of the camera builders and [`Camera::size`]: embedded-graphics' own, width
+/// by height, so a display's size can be passed as it is.
+pub use embedded_graphics::geometry::Size;
 pub use error::{CameraProblem, Error, Quantity};
 pub use framebuffer::Framebuffer;
 pub use geometry::{Hit, Plane, Ray, Shape, Sphere};
 pub use hash::FrameHash;
 pub use numbers::{FAR, Fx, LIMIT, Vec3, fx_from_f32, isqrt, mul};
 pub use render::{
-    Camera, MAX_PIXELS, RowRays, render, render_row, render_row_supersampled, shoot_row,
-    shoot_row_skipping,
+    Camera, LookAt, MAX_PIXELS, Orbit, Pinhole, RowRays, render, render_row,
+    render_row_supersampled, shoot_row, shoot_row_skipping,
 };
 pub use scene::{Background, Checker, Light, Material, Object, Rgb, Scene};
 

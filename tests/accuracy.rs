@@ -7,10 +7,10 @@
 mod accuracy;
 
 use accuracy::Accuracy;
-use fixray::{Camera, demo};
+use fixray::{Camera, Size, demo};
 use fixray_reference::{DCamera, DScene, DVec3};
 
-fn demo_dcamera(cols: u16, rows: u16) -> DCamera {
+fn demo_dcamera(cols: u32, rows: u32) -> DCamera {
     fixray_reference::demo_camera(cols, rows).unwrap()
 }
 
@@ -52,7 +52,12 @@ fn demo_scene_through_the_look_at_camera_matches_the_reference() {
         [0.0f32, 1.0, 0.2],
     );
     let v = |p: [f32; 3]| DVec3::new(p[0] as f64, p[1] as f64, p[2] as f64);
-    let camera = Camera::look_at(eye, target, up, 50.0, 160, 128).unwrap();
+    let camera = Camera::look_at(eye, target)
+        .up(up)
+        .fov_degrees(50.0)
+        .size(Size::new(160, 128))
+        .build()
+        .unwrap();
     let dcamera = DCamera::look_at(v(eye), v(target), v(up), 50.0, 160, 128).unwrap();
     check(
         "demo look-at 160x128",

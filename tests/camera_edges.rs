@@ -6,7 +6,7 @@
 //! own inputs (not from fixray's rounded camera): where a ray lands on that screen, in pixels.
 
 use fixray::{
-    Camera, Error, Fx, LIMIT, Quantity, Ray, Rgb, demo, render_row, render_row_supersampled,
+    Camera, Error, Fx, LIMIT, Quantity, Ray, Rgb, Size, demo, render_row, render_row_supersampled,
     shoot_row, shoot_row_skipping,
 };
 use fixray_reference::{DRay, DScene, DVec3};
@@ -47,7 +47,7 @@ struct Exact {
 }
 
 impl Exact {
-    fn pinhole(w: f32, h: f32, z_p: f32, rows: u16, cols: u16) -> Exact {
+    fn pinhole(w: f32, h: f32, z_p: f32, cols: u32, rows: u32) -> Exact {
         Exact {
             f: [0.0, 0.0, -1.0],
             right: [1.0, 0.0, 0.0],
@@ -59,7 +59,7 @@ impl Exact {
         }
     }
 
-    fn look_at(eye: [f32; 3], target: [f32; 3], up: [f32; 3], fov: f32, c: u16, r: u16) -> Exact {
+    fn look_at(eye: [f32; 3], target: [f32; 3], up: [f32; 3], fov: f32, c: u32, r: u32) -> Exact {
         let f = unit(sub(f64s(target), f64s(eye)));
         let right = unit(cross(f, f64s(up)));
         let pitch = 2.0 * (f64::from(fov).to_radians() / 2.0).tan() / r as f64;
@@ -101,8 +101,8 @@ impl Exact {
         )
     }
 
-    /// How far (pixels) the ray through pixel (`row`, `col`) lands from the pixel's centre.
-    fn shift(&self, ray: &Ray, row: u16, col: u16) -> f64 {
+    /// How far (pixels) the ray through pixel (`col`, `row`) lands from the pixel's centre.
+    fn shift(&self, ray: &Ray, col: u32, row: u32) -> f64 {
         let (x, y) = self.landing(ray.dir.to_f64());
         (x - (col as f64 + 0.5)).hypot(y - (row as f64 + 0.5))
     }
@@ -113,26 +113,29 @@ fn sub(a: V, b: V) -> V {
 }
 
 /// Rows (or columns) worth trying on a screen of `n`: its edges and centre, and up to
-/// `u16::MAX` past it.
-fn lines(n: u16) -> Vec<u16> {
+/// `u32::MAX` past it.
+fn lines(n: u32) -> Vec<u32> {
     let mut v = vec![0, n / 2, n - 1, n, n.saturating_add(1)];
-    v.extend([1000, 4095, 4096, 9999, 32767, 32768, 40000, 65534, u16::MAX]);
+    v.extend([
+        1000, 4095, 4096, 9999, 32767, 32768, 40000, 65534, 65535, 65536,
+    ]);
+    v.extend([1 << 24, (1 << 31) - 1, 1 << 31, u32::MAX - 1, u32::MAX]);
     v
 }
 
 /// The screen's edges, centre and a grid every `step` pixels.
-fn sample(n: u16, step: u16) -> Vec<u16> {
-    let mut v: Vec<u16> = (0..n).step_by(step as usize).collect();
+fn sample(n: u32, step: u32) -> Vec<u32> {
+    let mut v: Vec<u32> = (0..n).step_by(step as usize).collect();
     v.extend([n / 2, n - 1]);
     v
 }
 
 /// The largest shift (pixels) of a ray of the screen's sampled pixels.
-fn largest_shift(camera: &Camera, exact: &Exact, step: u16) -> f64 {
+fn largest_shift(camera: &Camera, exact: &Exact, step: u32) -> f64 {
     let mut worst = 0.0f64;
-    for row in sample(camera.rows(), step) {
-        for col in sample(camera.cols(), step) {
-            worst = worst.max(exact.shift(&camera.ray(row, col), row, col));
+    for row in sample(camera.height(), step) {
+        for col in sample(camera.width(), step) {
+            worst = worst.max(exact.shift(&camera.ray(col, row), col, row));
         }
     }
     worst
@@ -151,15 +154,15 @@ const STEP: f64 = 1.0 / 65536.0;
 /// by at most `√3·(F + |x| + |y|) + √3` steps, and `F + |x| + |y| ≤ √3·‖w‖`; normalising adds
 /// √3 steps. In all, at most `(3 + √3 + √3/‖w‖)` steps of angle: below `(5 + 2/‖w‖)` steps.
 fn assert_rays_continue_the_plane(name: &str, camera: &Camera, exact: &Exact) {
-    for row in lines(camera.rows()) {
-        for col in lines(camera.cols()) {
-            let dir = camera.ray(row, col).dir.to_f64();
+    for row in lines(camera.height()) {
+        for col in lines(camera.width()) {
+            let dir = camera.ray(col, row).dir.to_f64();
             // Each component is within one Q16.16 step of the unit vector along the rounded
             // direction, so the length is within √3 steps of 1.
             let length = dot(dir, dir).sqrt();
             assert!(
                 (length - 1.0).abs() <= 3f64.sqrt() * STEP,
-                "{name} ({row}, {col}): length {length}"
+                "{name} ({col}, {row}): length {length}"
             );
             let (x, y) = (col as f64 + 0.5, row as f64 + 0.5);
             let want = exact.towards(x, y);
@@ -167,7 +170,7 @@ fn assert_rays_continue_the_plane(name: &str, camera: &Camera, exact: &Exact) {
             let angle = dot(cross(dir, want), cross(dir, want)).sqrt() / length;
             assert!(
                 angle <= bound && dot(dir, want) > 0.0,
-                "{name} ({row}, {col}): {dir:?} is {angle:e} rad from {want:?}"
+                "{name} ({col}, {row}): {dir:?} is {angle:e} rad from {want:?}"
             );
         }
     }
@@ -180,42 +183,76 @@ fn rays_off_the_screen_continue_its_plane() {
     let cases: Vec<(&str, Camera, Exact)> = vec![
         (
             "pinhole 1x1",
-            Camera::pinhole(1.0, 1.0, 1.0, 1, 1).unwrap(),
+            Camera::pinhole(1.0, 1.0, 1.0)
+                .size(Size::new(1, 1))
+                .build()
+                .unwrap(),
             Exact::pinhole(1.0, 1.0, 1.0, 1, 1),
         ),
         (
             "pinhole 2x2, pixels 4 times taller",
-            Camera::pinhole(0.5, 2.0, 1.0, 2, 2).unwrap(),
+            Camera::pinhole(0.5, 2.0, 1.0)
+                .size(Size::new(2, 2))
+                .build()
+                .unwrap(),
             Exact::pinhole(0.5, 2.0, 1.0, 2, 2),
         ),
         (
             "look-at 2x2 60°",
-            Camera::look_at(o, ahead, up, 60.0, 2, 2).unwrap(),
+            Camera::look_at(o, ahead)
+                .up(up)
+                .size(Size::new(2, 2))
+                .build()
+                .unwrap(),
             Exact::look_at(o, ahead, up, 60.0, 2, 2),
         ),
         (
             "look-at 1x1 170°",
-            Camera::look_at(eye, target, tilted, 170.0, 1, 1).unwrap(),
+            Camera::look_at(eye, target)
+                .up(tilted)
+                .fov_degrees(170.0)
+                .size(Size::new(1, 1))
+                .build()
+                .unwrap(),
             Exact::look_at(eye, target, tilted, 170.0, 1, 1),
         ),
         (
             "look-at 160x128 2°",
-            Camera::look_at(eye, target, tilted, 2.0, 160, 128).unwrap(),
+            Camera::look_at(eye, target)
+                .up(tilted)
+                .fov_degrees(2.0)
+                .size(Size::new(160, 128))
+                .build()
+                .unwrap(),
             Exact::look_at(eye, target, tilted, 2.0, 160, 128),
         ),
         (
             "look-at 4096x4096 60°",
-            Camera::look_at(eye, target, tilted, 60.0, 4096, 4096).unwrap(),
+            Camera::look_at(eye, target)
+                .up(tilted)
+                .size(Size::new(4096, 4096))
+                .build()
+                .unwrap(),
             Exact::look_at(eye, target, tilted, 60.0, 4096, 4096),
         ),
         (
             "look-at 4096x4096 150°",
-            Camera::look_at(o, ahead, up, 150.0, 4096, 4096).unwrap(),
+            Camera::look_at(o, ahead)
+                .up(up)
+                .fov_degrees(150.0)
+                .size(Size::new(4096, 4096))
+                .build()
+                .unwrap(),
             Exact::look_at(o, ahead, up, 150.0, 4096, 4096),
         ),
         (
             "look-at 4096x4096 16°",
-            Camera::look_at(eye, target, tilted, 16.0, 4096, 4096).unwrap(),
+            Camera::look_at(eye, target)
+                .up(tilted)
+                .fov_degrees(16.0)
+                .size(Size::new(4096, 4096))
+                .build()
+                .unwrap(),
             Exact::look_at(eye, target, tilted, 16.0, 4096, 4096),
         ),
     ];
@@ -227,15 +264,18 @@ fn rays_off_the_screen_continue_its_plane() {
 #[test]
 fn a_ray_far_right_of_a_small_screen_looks_right() {
     // 2 × 2 at 60°: column 40 000 is 40 000 pixels right of the centre, nearly straight right.
-    let camera = Camera::look_at([0.0; 3], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0], 60.0, 2, 2).unwrap();
-    let dir = camera.ray(0, 40000).dir.to_f64();
+    let camera = Camera::look_at([0.0; 3], [0.0, 0.0, -1.0])
+        .size(Size::new(2, 2))
+        .build()
+        .unwrap();
+    let dir = camera.ray(40000, 0).dir.to_f64();
     assert!(dir[0] > 0.99999 && dir[2] < 0.0, "{dir:?}");
     // And row 40 000 looks down, not up.
-    let dir = camera.ray(40000, 1).dir.to_f64();
+    let dir = camera.ray(1, 40000).dir.to_f64();
     assert!(dir[1] < -0.99999 && dir[2] < 0.0, "{dir:?}");
     // The sub-pixel samples too.
     let dir = camera
-        .sample_ray(u16::MAX, u16::MAX, 15, 15, 16)
+        .sample_ray(u32::MAX, u32::MAX, 15, 15, 16)
         .dir
         .to_f64();
     assert!(dir[0] > 0.7 && dir[1] < -0.7, "{dir:?}");
@@ -245,24 +285,40 @@ fn a_ray_far_right_of_a_small_screen_looks_right() {
 fn pixel_centres_off_the_screen_continue_it_or_saturate() {
     // One pixel 1024 units wide, 1 unit away (1/1024 of a pixel, exact in Q16.16): column c
     // is at x = 1024·c.
-    let camera = Camera::pinhole(1024.0, 1024.0, 1.0, 1, 1).unwrap();
+    let camera = Camera::pinhole(1024.0, 1024.0, 1.0)
+        .size(Size::new(1, 1))
+        .build()
+        .unwrap();
     assert_eq!(camera.pixel_centre(0, 0).to_f64(), [0.0, 0.0, -1.0]);
-    assert_eq!(camera.pixel_centre(0, 31).to_f64(), [31744.0, 0.0, -1.0]);
+    assert_eq!(camera.pixel_centre(31, 0).to_f64(), [31744.0, 0.0, -1.0]);
     // Column 32 is at x = 32 768, past Q16.16: it saturates, the other coordinates do not.
-    let far = camera.pixel_centre(u16::MAX, 32).to_f64();
+    let far = camera.pixel_centre(32, u32::MAX).to_f64();
     assert!(far[0] > 32767.99 && far[1] < -32767.99, "{far:?}");
     assert_eq!(far[2], -1.0);
     // A look-at camera's screen is one unit away, whatever the row.
-    let camera = Camera::look_at([0.0; 3], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0], 90.0, 2, 2).unwrap();
+    let camera = Camera::look_at([0.0; 3], [0.0, 0.0, -1.0])
+        .fov_degrees(90.0)
+        .size(Size::new(2, 2))
+        .build()
+        .unwrap();
     // Pixel pitch 1: x = col − ½ and y = ½ − row, saturating past ±32 768.
     let saturated = |v: f64| v.clamp(-32768.0, 32_767.999_984_741_21);
-    for (row, col) in [(0, 0), (1, 1), (40000, 1), (7, 32000), (u16::MAX, u16::MAX)] {
-        let p = camera.pixel_centre(row, col).to_f64();
+    for (col, row) in [
+        (0, 0),
+        (1, 1),
+        (1, 40000),
+        (32000, 7),
+        (u32::from(u16::MAX), u32::from(u16::MAX)),
+        (u32::MAX, 1),
+        (0, u32::MAX),
+        (u32::MAX, u32::MAX),
+    ] {
+        let p = camera.pixel_centre(col, row).to_f64();
         let want = [col as f64 - 0.5, 0.5 - row as f64, -1.0].map(saturated);
         for axis in 0..3 {
             assert!(
                 (p[axis] - want[axis]).abs() <= STEP,
-                "({row}, {col}): {p:?}"
+                "({col}, {row}): {p:?}"
             );
         }
     }
@@ -272,7 +328,10 @@ fn pixel_centres_off_the_screen_continue_it_or_saturate() {
 fn degenerate_pinholes_are_refused_with_the_quantity() {
     // The view distance rounds to zero: the ray would have no direction.
     assert_eq!(
-        Camera::pinhole(1.0, 1.0, 1e-6, 1, 1).map(|_| ()),
+        Camera::pinhole(1.0, 1.0, 1e-6)
+            .size(Size::new(1, 1))
+            .build()
+            .map(|_| ()),
         Err(Error::OutOfRange {
             quantity: Quantity::ScreenDistance,
             min: Fx::DELTA,
@@ -281,12 +340,15 @@ fn degenerate_pinholes_are_refused_with_the_quantity() {
     );
     // A screen distance that rounds fine but is a millionth of a pixel.
     assert!(matches!(
-        Camera::pinhole(1000.0, 1000.0, 0.001, 1, 1),
+        Camera::pinhole(1000.0, 1000.0, 0.001).size(Size::new(1, 1)).build(),
         Err(Error::FieldOfViewTooWide { max_millidegrees }) if max_millidegrees > 179_990
     ));
     // Pixels narrower than a Q16.16 step.
     assert_eq!(
-        Camera::pinhole(1e-4, 1e-4, 1e-4, 16, 16).map(|_| ()),
+        Camera::pinhole(1e-4, 1e-4, 1e-4)
+            .size(Size::new(16, 16))
+            .build()
+            .map(|_| ()),
         Err(Error::OutOfRange {
             quantity: Quantity::PixelWidth,
             min: Fx::DELTA,
@@ -295,7 +357,9 @@ fn degenerate_pinholes_are_refused_with_the_quantity() {
     );
     // A screen too far for its pixels: 1024 units away, 1/64 wide over 4 pixels.
     assert!(matches!(
-        Camera::pinhole(1.0 / 64.0, 1.0 / 64.0, 1024.0, 4, 4),
+        Camera::pinhole(1.0 / 64.0, 1.0 / 64.0, 1024.0)
+            .size(Size::new(4, 4))
+            .build(),
         Err(Error::FieldOfViewTooNarrow { .. })
     ));
 }
@@ -307,14 +371,17 @@ fn degenerate_pinholes_are_refused_with_the_quantity() {
 fn every_accepted_pinhole_has_rays_within_half_a_pixel() {
     let lengths: Vec<f32> = (-20..=10).map(|e| 2f32.powi(e) * 0.77).collect();
     let (mut accepted, mut refused) = (0, 0);
-    for &(rows, cols) in &[(1u16, 1u16), (2, 2), (3, 5), (128, 160), (4096, 4096)] {
+    for &(cols, rows) in &[(1, 1), (2, 2), (5, 3), (160, 128), (4096, 4096)] {
         for &w in &lengths {
             for &z_p in &lengths {
                 for h in [w, w * 3.0] {
-                    match Camera::pinhole(w, h, z_p, rows, cols) {
+                    match Camera::pinhole(w, h, z_p)
+                        .size(Size::new(cols, rows))
+                        .build()
+                    {
                         Ok(camera) => {
                             accepted += 1;
-                            let exact = Exact::pinhole(w, h, z_p, rows, cols);
+                            let exact = Exact::pinhole(w, h, z_p, cols, rows);
                             let worst = largest_shift(&camera, &exact, 512);
                             assert!(
                                 worst <= 0.5,
@@ -340,22 +407,34 @@ fn every_accepted_pinhole_has_rays_within_half_a_pixel() {
 fn fields_of_view_near_180_degrees_are_refused_not_wrapped() {
     let (o, ahead, up) = ([0.0; 3], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]);
     assert!(matches!(
-        Camera::look_at(o, ahead, up, 179.999, 1, 1),
+        Camera::look_at(o, ahead)
+            .up(up)
+            .fov_degrees(179.999)
+            .size(Size::new(1, 1))
+            .build(),
         Err(Error::FieldOfViewTooWide {
             max_millidegrees: 179_990..=179_999
         })
     ));
     assert!(matches!(
-        Camera::orbit([0.0, 0.0, -16.0], 16.0, 0.0, 0.0, 179.999, 1, 1),
+        Camera::orbit([0.0, 0.0, -16.0], 16.0)
+            .fov_degrees(179.999)
+            .size(Size::new(1, 1))
+            .build(),
         Err(Error::FieldOfViewTooWide { .. })
     ));
     // Every field of view up to 180°, on every screen: refused, or rays within half a pixel.
-    for &(cols, rows) in &[(1u16, 1u16), (2, 2), (160, 128), (320, 240), (4096, 4096)] {
+    for &(cols, rows) in &[(1, 1), (2, 2), (160, 128), (320, 240), (4096, 4096)] {
         for fov in [
             90.0, 120.0, 150.0, 151.0, 160.0, 170.0, 177.0, 178.0, 178.9, 179.0, 179.5, 179.9,
             179.99, 179.999, 179.9999, 179.99998,
         ] {
-            match Camera::look_at(o, ahead, up, fov, cols, rows) {
+            match Camera::look_at(o, ahead)
+                .up(up)
+                .fov_degrees(fov)
+                .size(Size::new(cols, rows))
+                .build()
+            {
                 Ok(camera) => {
                     let exact = Exact::look_at(o, ahead, up, fov, cols, rows);
                     let worst = largest_shift(&camera, &exact, 256);
@@ -375,10 +454,16 @@ fn fields_of_view_near_180_degrees_are_refused_not_wrapped() {
 #[test]
 fn the_field_of_view_limits_are_the_ones_reported() {
     let (o, ahead, up) = ([0.0; 3], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]);
-    let camera = |fov: f32, cols, rows| Camera::look_at(o, ahead, up, fov, cols, rows);
+    let camera = |fov: f32, cols, rows| {
+        Camera::look_at(o, ahead)
+            .up(up)
+            .fov_degrees(fov)
+            .size(Size::new(cols, rows))
+            .build()
+    };
     // Expected from F² + R² = 16 384·F, worked out by hand in f64 (README of the limits).
     for (cols, rows, narrowest, widest) in [
-        (160u16, 128u16, 448, 178_852),
+        (160, 128, 448, 178_852),
         (320, 240, 840, 177_668),
         (1920, 1080, 3793, 164_313),
         (4096, 4096, 14_721, 151_029),
@@ -413,8 +498,12 @@ fn the_field_of_view_limits_are_the_ones_reported() {
 fn every_function_that_takes_a_row_checks_it_the_same_way() {
     let (scene, camera) = (demo::scene(), demo::camera(40, 32).unwrap());
     let mut out = [Rgb::BLACK; 40];
-    for row in [32, 33, 40000, u16::MAX] {
-        let refused = Err(Error::RowOutOfRange { row, rows: 32 });
+    for row in [32, 33, 40000, u32::from(u16::MAX), 1 << 16, u32::MAX] {
+        // Rows past u16::MAX are named as u16::MAX.
+        let refused = Err(Error::RowOutOfRange {
+            row: u16::try_from(row).unwrap_or(u16::MAX),
+            rows: 32,
+        });
         let called = std::cell::Cell::new(false);
         let call = || called.set(true);
         assert_eq!(shoot_row(&scene, &camera, row, |_, _, _| call()), refused);
@@ -457,7 +546,10 @@ fn every_function_that_takes_a_row_checks_it_the_same_way() {
 fn a_row_far_below_a_small_screen_is_refused_not_shot_upward() {
     // 2 × 2 at 60°: row 40 000 used to wrap and look straight up.
     let scene = demo::scene();
-    let camera = Camera::look_at([0.0; 3], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0], 60.0, 2, 2).unwrap();
+    let camera = Camera::look_at([0.0; 3], [0.0, 0.0, -1.0])
+        .size(Size::new(2, 2))
+        .build()
+        .unwrap();
     assert_eq!(
         shoot_row(&scene, &camera, 40000, |_, _, _| {}),
         Err(Error::RowOutOfRange {
@@ -495,11 +587,16 @@ struct FovAccuracy {
 /// the narrowest field of view.
 const SURVEY: ([f32; 3], [f32; 3], [f32; 3]) = ([0.0; 3], [4.5, -0.5, -18.0], [0.0, 1.0, 0.0]);
 
-fn survey(fov: f32, cols: u16, rows: u16) -> FovAccuracy {
+fn survey(fov: f32, cols: u32, rows: u32) -> FovAccuracy {
     let (eye, target, up) = SURVEY;
     let scene = demo::scene();
     let dscene = DScene::from_scene(&scene).unwrap();
-    let camera = Camera::look_at(eye, target, up, fov, cols, rows).unwrap();
+    let camera = Camera::look_at(eye, target)
+        .up(up)
+        .fov_degrees(fov)
+        .size(Size::new(cols, rows))
+        .build()
+        .unwrap();
     let exact = Exact::look_at(eye, target, up, fov, cols, rows);
     let origin = DVec3::new(0.0, 0.0, 0.0);
     // The object the reference sees through the exact screen's point (x, y).
@@ -514,11 +611,11 @@ fn survey(fov: f32, cols: u16, rows: u16) -> FovAccuracy {
     };
     for row in 0..rows {
         for col in 0..cols {
-            let ray = camera.ray(row, col);
+            let ray = camera.ray(col, row);
             let object = scene.shoot(&ray).map(|h| h.object);
             let (x, y) = (col as f64 + 0.5, row as f64 + 0.5);
             a.pixels += 1;
-            a.ray_shift = a.ray_shift.max(exact.shift(&ray, row, col));
+            a.ray_shift = a.ray_shift.max(exact.shift(&ray, col, row));
             if object == seen(x, y) {
                 continue;
             }
@@ -602,14 +699,19 @@ fn render_row_equals_trace_at_the_field_of_view_limits() {
     let (eye, target, up) = SURVEY;
     let scene = demo::scene();
     for fov in [0.841, 177.6] {
-        let camera = Camera::look_at(eye, target, up, fov, 320, 240).unwrap();
+        let camera = Camera::look_at(eye, target)
+            .up(up)
+            .fov_degrees(fov)
+            .size(Size::new(320, 240))
+            .build()
+            .unwrap();
         let mut out = [Rgb::BLACK; 320];
         for row in 0..240 {
             render_row(&scene, &camera, row, &mut out).unwrap();
             for (col, &pixel) in (0..).zip(out.iter()) {
                 assert_eq!(
                     pixel,
-                    scene.trace(&camera.ray(row, col)),
+                    scene.trace(&camera.ray(col, row)),
                     "{fov}° ({row}, {col})"
                 );
             }

@@ -80,8 +80,8 @@ impl<C: PixelColor> DrawTarget for Recorder<C> {
 }
 
 /// The demo at 40 × 30: small enough to check every pixel of every format quickly.
-const COLS: u16 = 40;
-const ROWS: u16 = 30;
+const COLS: u32 = 40;
+const ROWS: u32 = 30;
 
 fn demo_frame() -> (Scene<8>, Camera, Framebuffer<40, 30>) {
     let (scene, camera) = (demo::scene(), demo::camera(COLS, ROWS).unwrap());
@@ -98,7 +98,7 @@ fn streamed_equals_framebuffer<C: FromRgb + core::fmt::Debug>(buffer_rows: usize
     let origin = Point::new(7, 11);
     let mut display = Recorder::<C>::new(53, 47);
     let view = Viewport::at(&scene, &camera, origin);
-    let mut buffer = vec![Rgb::BLACK; usize::from(COLS) * buffer_rows];
+    let mut buffer = vec![Rgb::BLACK; COLS as usize * buffer_rows];
     view.render(&mut buffer, &mut display).unwrap();
     assert!(display.faults.is_empty(), "{:?}", display.faults);
 
@@ -183,7 +183,10 @@ fn a_sphere_straight_ahead_matches_the_ascii_art() {
     let mut scene: Scene<1> = Scene::new(light, Fx::ONE, Rgb::BLACK).unwrap();
     let sphere = Sphere::new(Vec3::from_ints(0, 0, -10), Fx::from_num(6)).unwrap();
     scene.add_sphere(sphere, Rgb::WHITE).unwrap();
-    let camera = Camera::pinhole(16.0, 16.0, 8.0, 16, 16).unwrap();
+    let camera = Camera::pinhole(16.0, 16.0, 8.0)
+        .size(Size::new(16, 16))
+        .build()
+        .unwrap();
 
     let mut display = MockDisplay::<BinaryColor>::new();
     let view = Viewport::at(&scene, &camera, Point::new(3, 2));
@@ -326,9 +329,17 @@ fn refused_requests_are_errors_and_draw_nothing() {
         }))
     );
     assert_eq!(
-        view.render_rows(0..u16::MAX, &mut row, &mut display),
+        view.render_rows(0..u16::MAX.into(), &mut row, &mut display),
         Err(DrawError::Render(Error::RowOutOfRange {
             row: u16::MAX - 1,
+            rows: 30
+        }))
+    );
+    // Rows past u16::MAX are named as u16::MAX.
+    assert_eq!(
+        view.render_rows(0..u32::MAX, &mut row, &mut display),
+        Err(DrawError::Render(Error::RowOutOfRange {
+            row: u16::MAX,
             rows: 30
         }))
     );
@@ -349,7 +360,7 @@ fn refused_requests_are_errors_and_draw_nothing() {
 fn bands_cover_every_row_once_and_can_be_interleaved() {
     let (scene, camera, frame) = demo_frame();
     let view = Viewport::at(&scene, &camera, Point::zero());
-    for height in [0, 1, 7, 30, 31, u16::MAX] {
+    for height in [0, 1, 7, 30, 31, u32::MAX] {
         let bands: Vec<_> = view.bands(height).collect();
         assert_eq!(bands.len(), view.bands(height).len());
         let step = height.clamp(1, 30);

@@ -73,7 +73,7 @@ fn framebuffer<const W: usize, const H: usize>() -> Box<Framebuffer<W, H>> {
     let mut frame = Box::new(Framebuffer::<W, H>::new());
     render(
         &demo::scene(),
-        &demo::camera(W as u16, H as u16).unwrap(),
+        &demo::camera(W as u32, H as u32).unwrap(),
         &mut frame,
     )
     .unwrap();

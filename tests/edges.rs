@@ -5,7 +5,7 @@
 #[path = "support/accuracy.rs"]
 mod accuracy;
 
-use fixray::{Camera, Fx, Light, Material, Plane, Rgb, Scene, Sphere, Vec3, render_row};
+use fixray::{Camera, Fx, Light, Material, Plane, Rgb, Scene, Size, Sphere, Vec3, render_row};
 
 const SKY: Rgb = Rgb::new(40, 60, 200);
 
@@ -18,27 +18,22 @@ fn sphere(x: f32, y: f32, z: f32, r: f32) -> Sphere {
     Sphere::new(centre, Fx::from_num(r)).unwrap()
 }
 
-fn look_ahead(cols: u16, rows: u16) -> Camera {
-    Camera::look_at(
-        [0.0; 3],
-        [0.0, 0.0, -1.0],
-        [0.0, 1.0, 0.0],
-        60.0,
-        cols,
-        rows,
-    )
-    .unwrap()
+fn look_ahead(cols: u32, rows: u32) -> Camera {
+    Camera::look_at([0.0; 3], [0.0, 0.0, -1.0])
+        .size(Size::new(cols, rows))
+        .build()
+        .unwrap()
 }
 
 /// Every pixel of `render_row` against `trace` of the camera's own ray for it; returns how
 /// many differ.
 fn pixels_unlike_tracing<const N: usize>(scene: &Scene<N>, camera: &Camera) -> usize {
-    let mut out = vec![Rgb::BLACK; camera.cols() as usize];
+    let mut out = vec![Rgb::BLACK; camera.width() as usize];
     let mut differ = 0;
-    for row in 0..camera.rows() {
+    for row in 0..camera.height() {
         render_row(scene, camera, row, &mut out).unwrap();
         for (col, pixel) in (0..).zip(&out) {
-            differ += usize::from(*pixel != scene.trace(&camera.ray(row, col)));
+            differ += usize::from(*pixel != scene.trace(&camera.ray(col, row)));
         }
     }
     differ
@@ -46,8 +41,8 @@ fn pixels_unlike_tracing<const N: usize>(scene: &Scene<N>, camera: &Camera) -> u
 
 /// The whole frame through `render_row`.
 fn frame<const N: usize>(scene: &Scene<N>, camera: &Camera) -> Vec<Rgb> {
-    let mut out = vec![Rgb::BLACK; camera.cols() as usize * camera.rows() as usize];
-    for (row, line) in (0..).zip(out.chunks_mut(camera.cols() as usize)) {
+    let mut out = vec![Rgb::BLACK; camera.width() as usize * camera.height() as usize];
+    for (row, line) in (0..).zip(out.chunks_mut(camera.width() as usize)) {
         render_row(scene, camera, row, line).unwrap();
     }
     out
@@ -71,7 +66,7 @@ fn objects_past_the_64th_are_drawn_when_object_63_is_out_of_the_run() {
     assert_eq!((small, large), (63, 64));
     let camera = look_ahead(160, 128);
     assert_eq!(
-        scene.shoot(&camera.ray(64, 80)).map(|h| h.object),
+        scene.shoot(&camera.ray(80, 64)).map(|h| h.object),
         Some(64),
         "the centre pixel sees object 64"
     );
@@ -127,9 +122,9 @@ fn an_eye_on_top_of_a_sphere_sees_the_sky_above_it() {
         .add_sphere(sphere(0.0, 2.0, -20.0, 1.0), Rgb::new(200, 0, 0))
         .unwrap();
     let camera = look_ahead(160, 128);
-    for row in 0..camera.rows() {
-        for col in 0..camera.cols() {
-            let ray = camera.ray(row, col);
+    for row in 0..camera.height() {
+        for col in 0..camera.width() {
+            let ray = camera.ray(col, row);
             let seen = scene.shoot(&ray).map(|h| h.object);
             if ray.dir.y > Fx::ZERO {
                 // Above the horizon the eye leaves the big sphere: only the small ball or sky.
@@ -140,7 +135,7 @@ fn an_eye_on_top_of_a_sphere_sees_the_sky_above_it() {
             }
         }
     }
-    let centre = camera.ray(54, 80); // 2/20 up: the small ball's centre row
+    let centre = camera.ray(80, 54); // 2/20 up: the small ball's centre row
     assert_eq!(scene.shoot(&centre).map(|h| h.object), Some(small));
     assert_eq!(pixels_unlike_tracing(&scene, &camera), 0);
 }
@@ -156,9 +151,9 @@ fn an_eye_on_a_plane_sees_it_edge_on_and_not_at_all() {
         .unwrap();
     let camera = look_ahead(80, 64);
     let mut sky = 0;
-    for row in 0..camera.rows() {
-        for col in 0..camera.cols() {
-            let hit = scene.shoot(&camera.ray(row, col));
+    for row in 0..camera.height() {
+        for col in 0..camera.width() {
+            let hit = scene.shoot(&camera.ray(col, row));
             assert!(
                 hit.is_none_or(|h| h.object == ball),
                 "row {row}, column {col}: {hit:?}"

@@ -1,6 +1,7 @@
 //! Editing a scene between frames: after any edit the render is exactly that of a scene built
 //! from scratch with the edited values, shadow cones and all.
 
+use fixray::Size;
 use fixray::{
     Background, Camera, Error, Fx, Light, Material, Object, Plane, Quantity, Rgb, Scene, Shape,
     Sphere, Vec3, render_row,
@@ -44,8 +45,8 @@ fn build(objects: &[Object], lights: &[Light], background: Background) -> Scene<
 }
 
 fn frame(scene: &Scene<6, 2>, camera: &Camera) -> Vec<Rgb> {
-    let mut out = vec![Rgb::BLACK; camera.cols() as usize * camera.rows() as usize];
-    for (row, line) in (0..).zip(out.chunks_mut(camera.cols() as usize)) {
+    let mut out = vec![Rgb::BLACK; camera.width() as usize * camera.height() as usize];
+    for (row, line) in (0..).zip(out.chunks_mut(camera.width() as usize)) {
         render_row(scene, camera, row, line).unwrap();
     }
     out
@@ -53,15 +54,10 @@ fn frame(scene: &Scene<6, 2>, camera: &Camera) -> Vec<Rgb> {
 
 #[test]
 fn every_edit_renders_as_a_scene_built_with_it() {
-    let camera = Camera::look_at(
-        [0.0, 2.0, 4.0],
-        [0.0, -1.0, -14.0],
-        [0.0, 1.0, 0.0],
-        60.0,
-        96,
-        72,
-    )
-    .unwrap();
+    let camera = Camera::look_at([0.0, 2.0, 4.0], [0.0, -1.0, -14.0])
+        .size(Size::new(96, 72))
+        .build()
+        .unwrap();
     let mut objects = vec![
         Object {
             shape: ground(),
@@ -187,8 +183,10 @@ fn pick_names_the_object_render_row_shades() {
         &[light(0, 10, 0)],
         SKY.into(),
     );
-    let camera =
-        Camera::look_at([0.0; 3], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0], 60.0, 40, 30).unwrap();
+    let camera = Camera::look_at([0.0; 3], [0.0, 0.0, -1.0])
+        .size(Size::new(40, 30))
+        .build()
+        .unwrap();
     let mut row = vec![Rgb::BLACK; 40];
     let mut seen = [0usize; 3];
     for y in 0..30 {
@@ -197,7 +195,7 @@ fn pick_names_the_object_render_row_shades() {
             let hit = scene.pick(&camera, x, y).unwrap();
             seen[hit.map_or(2, |h| h.object)] += 1;
             // The pixel is the shade of exactly that hit.
-            let ray = camera.ray(y, x);
+            let ray = camera.ray(x, y);
             assert_eq!(
                 row[x as usize],
                 scene.shade(&ray, hit.as_ref()),

@@ -45,7 +45,7 @@ use std::panic::{self, AssertUnwindSafe};
 use std::sync::Once;
 
 use common::{Source, XorShift};
-use embedded_graphics::prelude::Point;
+use embedded_graphics::prelude::{Point, Size};
 use fixray::draw::{self, FromRgb};
 use fixray::{
     Background, Camera, CameraProblem, Checker, Error, FAR, Fx, Hit, LIMIT, Light, Material,
@@ -212,14 +212,14 @@ fn demo_scenes_through_hostile_cameras() {
             } else {
                 demo::classic()
             };
-            let (cols, rows) = (camera.cols() as usize, camera.rows() as usize);
+            let (cols, rows) = (camera.width() as usize, camera.height() as usize);
             let all_rows = cols * rows <= 40 * 30;
-            let rows_checked: Vec<u16> = if all_rows {
-                (0..camera.rows())
-                    .chain([camera.rows(), u16::MAX])
+            let rows_checked: Vec<u32> = if all_rows {
+                (0..camera.height())
+                    .chain([camera.height(), u32::from(u16::MAX) + 1, u32::MAX])
                     .collect()
             } else {
-                vec![0, camera.rows() - 1, camera.rows()]
+                vec![0, camera.height() - 1, camera.height()]
             };
             let mut frame = vec![Vec::new(); if all_rows { rows } else { 0 }];
             for row in rows_checked {
@@ -240,7 +240,7 @@ fn demo_scenes_through_hostile_cameras() {
 /// Whether a screen of `cols × rows` square pixels with the demo's 60° of height breaks
 /// `Camera`'s documented ray budget, `F² + R² ≤ 16 384·F` (view distance `F`, half-diagonal
 /// `R`, in pixels), by more than rounding could decide.
-fn past_the_ray_budget(cols: u16, rows: u16) -> bool {
+fn past_the_ray_budget(cols: u32, rows: u32) -> bool {
     let f = rows as f64 * (demo::SCREEN_DISTANCE / demo::SCREEN_HEIGHT) as f64;
     let r2 = (cols as f64 * cols as f64 + rows as f64 * rows as f64) / 4.0;
     f * f + r2 > 16_384.0 * f * 1.001
@@ -255,7 +255,8 @@ fn demo_cameras_at_hostile_sizes() {
         200,
         |_| (),
         |src| {
-            let pick = |s: &mut XorShift| s.pick(&[0, 1, 2, 3, 160, 4096, 4097, u16::MAX]);
+            let pick =
+                |s: &mut XorShift| s.pick(&[0, 1, 2, 3, 160, 4096, 4097, 65_536 + 160, u32::MAX]);
             let (cols, rows) = (pick(src), pick(src));
             let bad = cols == 0 || rows == 0 || cols > 4096 || rows > 4096;
             for camera in [demo::camera(cols, rows), demo::classic_camera(cols, rows)] {
@@ -269,7 +270,7 @@ fn demo_cameras_at_hostile_sizes() {
                         };
                         assert_eq!(e, Error::DegenerateCamera(problem), "{cols}×{rows}");
                     }
-                    Err(e) if 2 * cols as u32 > 1024 * rows as u32 => {
+                    Err(e) if 2 * u64::from(cols) > 1024 * u64::from(rows) => {
                         // The demo's screen is 2 units high and its pixels square: wider than
                         // 512 pixels per row it is more than 1024 units wide, out of range.
                         assert!(
@@ -295,8 +296,8 @@ fn demo_cameras_at_hostile_sizes() {
                             !past_the_ray_budget(cols, rows),
                             "demo camera {cols}×{rows} is past the ray budget"
                         );
-                        assert_eq!((c.cols(), c.rows()), (cols, rows));
-                        let _ = c.ray(rows - 1, cols - 1);
+                        assert_eq!((c.width(), c.height()), (cols, rows));
+                        let _ = c.ray(cols - 1, rows - 1);
                     }
                 }
             }
@@ -658,11 +659,11 @@ fn hand_built(test: &str, part: u8) {
             if part == 1 {
                 for row in 0..6 {
                     for col in 0..8 {
-                        let _ = scene.trace(&camera.ray(row, col));
+                        let _ = scene.trace(&camera.ray(col, row));
                     }
                 }
                 let _ = scene.seen_from_row(&camera, src.bits() as u16);
-                let _ = scene.shoot_among(&camera.ray(src.bits() as u16, src.bits() as u16), !0);
+                let _ = scene.shoot_among(&camera.ray(src.bits() as u32, src.bits() as u32), !0);
                 for object in scene.objects() {
                     let _ = object.colour_at(common::vec_any(src));
                 }
@@ -687,7 +688,7 @@ fn hand_built(test: &str, part: u8) {
                 object: src.pick(&[0, 1, 2, 3, 4, usize::MAX]),
             };
             let _ = scene.shade(&ray, Some(&hit));
-            let valid = camera.ray(3, 4);
+            let valid = camera.ray(4, 3);
             let _ = scene.shade(&valid, Some(&hit));
         },
     );
@@ -849,27 +850,17 @@ fn numbers_saturate_instead_of_wrapping() {
 /// and its accessors give back what it was built with.
 #[test]
 fn camera_accessors() {
-    let camera = Camera::look_at(
-        [1.0, 2.0, 3.0],
-        [1.0, 2.0, -3.0],
-        [0.0, 1.0, 0.0],
-        60.0,
-        7,
-        5,
-    )
-    .expect("valid");
-    assert_eq!((camera.cols(), camera.rows()), (7, 5));
+    let camera = Camera::look_at([1.0, 2.0, 3.0], [1.0, 2.0, -3.0])
+        .size(Size::new(7, 5))
+        .build()
+        .expect("valid");
+    assert_eq!((camera.width(), camera.height()), (7, 5));
     assert_eq!(camera.eye(), Vec3::from_ints(1, 2, 3));
     let too_wide = fixray::MAX_PIXELS + 1;
     assert!(
-        Camera::look_at(
-            [0.0; 3],
-            [0.0, 0.0, -1.0],
-            [0.0, 1.0, 0.0],
-            60.0,
-            too_wide,
-            5
-        )
-        .is_err()
+        Camera::look_at([0.0; 3], [0.0, 0.0, -1.0])
+            .size(Size::new(too_wide, 5))
+            .build()
+            .is_err()
     );
 }

@@ -536,15 +536,11 @@ fn hostile_light(rng: &mut XorShift, i: usize) -> Light {
 #[test]
 fn hand_built_materials_lights_and_checkers_render_and_trace() {
     let mut rng = XorShift(0xfeed_beef_dead_c0de);
-    let camera = Camera::look_at(
-        [0.0, 1.0, 4.0],
-        [0.0, -1.0, -12.0],
-        [0.0, 1.0, 0.0],
-        70.0,
-        12,
-        9,
-    )
-    .unwrap();
+    let camera = Camera::look_at([0.0, 1.0, 4.0], [0.0, -1.0, -12.0])
+        .fov_degrees(70.0)
+        .size(Size::new(12, 9))
+        .build()
+        .unwrap();
     let mut row = [Rgb::BLACK; 12];
     for i in 0..120 {
         let background = if i % 2 == 0 {
@@ -580,13 +576,13 @@ fn hand_built_materials_lights_and_checkers_render_and_trace() {
         .unwrap();
         s.set_shadows(i % 4 != 1);
         s.set_depth((i % 6) as u8);
-        for r in 0..camera.rows() {
+        for r in 0..camera.height() {
             render_row(&s, &camera, r, &mut row).unwrap();
             // render_row is trace, pixel by pixel, whatever the materials hold.
             for (col, &pixel) in row.iter().enumerate() {
                 assert_eq!(
                     pixel,
-                    s.trace(&camera.ray(r, col as u16)),
+                    s.trace(&camera.ray(col as u32, r)),
                     "row {r} col {col}"
                 );
             }
@@ -597,7 +593,7 @@ fn hand_built_materials_lights_and_checkers_render_and_trace() {
             normal: hostile_vec(&mut rng, i + 9),
             object: i % 4,
         };
-        let _ = s.shade(&camera.ray(4, 6), Some(&hit));
+        let _ = s.shade(&camera.ray(6, 4), Some(&hit));
     }
 }
 

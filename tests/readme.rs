@@ -11,8 +11,8 @@
 
 use fixray::{Camera, FrameHash, Rgb, Scene, demo, render_row};
 
-const COLS: u16 = 160;
-const ROWS: u16 = 128;
+const COLS: u32 = 160;
+const ROWS: u32 = 128;
 
 /// The sentence of the README that states the hashes starts with this.
 const README: &str = include_str!("../README.md");

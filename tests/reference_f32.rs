@@ -28,8 +28,8 @@
 use fixray::{Rgb, demo};
 use fixray_reference::{self as reference, DCamera, DHit, DScene, DShape, DVec3, Real};
 
-const COLS: u16 = 160;
-const ROWS: u16 = 128;
+const COLS: u32 = 160;
+const ROWS: u32 = 128;
 
 /// How near a checker line (in world units) a hit must be for its square to be a tie: 25
 /// f32 steps at the farthest floor distance (ulp(32) = 3.8 × 10⁻⁶), far below a pixel's
@@ -65,8 +65,8 @@ fn compare(scene: &fixray::Scene<8>, camera: impl Fn() -> (DCamera, DCamera<f32>
     let mut d = Difference::default();
     for row in 0..ROWS {
         for col in 0..COLS {
-            let (hit, colour) = wide.trace(&wide_camera.ray(row, col));
-            let (hit32, colour32) = narrow.trace(&narrow_camera.ray(row, col));
+            let (hit, colour) = wide.trace(&wide_camera.ray(col, row));
+            let (hit32, colour32) = narrow.trace(&narrow_camera.ray(col, row));
             let worst = channel_difference(colour, colour32);
             d.pixels += 1;
             d.within_1 += u32::from(worst <= 1);
@@ -128,7 +128,7 @@ fn check(name: &str, d: &Difference) {
         d.on_edges,
         d.max_dt
     );
-    assert_eq!(d.pixels, u32::from(COLS) * u32::from(ROWS));
+    assert_eq!(d.pixels, COLS * ROWS);
     assert!(d.percent(d.same_object) >= 99.9, "{name}: {d:?}");
     assert!(d.max_channel <= 1, "{name}: {d:?}");
     // Ties are a line's worth of pixels (44 in the classic picture), not an area.

@@ -1,17 +1,17 @@
 //! `render_row` culls, skips and hints its way along a row; none of it may change a pixel.
 
-use fixray::{Rgb, demo, render_row};
+use fixray::{Rgb, Size, demo, render_row};
 
 /// Every pixel of `render_row` against `trace` of the camera's own ray for it.
 fn rows_match_tracing_each_pixel<const N: usize, const L: usize>(
     scene: &fixray::Scene<N, L>,
     camera: &fixray::Camera,
 ) {
-    let mut out = vec![Rgb::BLACK; camera.cols() as usize];
-    for row in 0..camera.rows() {
+    let mut out = vec![Rgb::BLACK; camera.width() as usize];
+    for row in 0..camera.height() {
         render_row(scene, camera, row, &mut out).unwrap();
         for (col, pixel) in (0..).zip(&out) {
-            let traced = scene.trace(&camera.ray(row, col));
+            let traced = scene.trace(&camera.ray(col, row));
             assert_eq!(*pixel, traced, "row {row}, column {col}");
         }
     }
@@ -20,8 +20,8 @@ fn rows_match_tracing_each_pixel<const N: usize, const L: usize>(
 /// A scene with and without shadows, through a camera at two sizes.
 fn rows_match_with_and_without_shadows(
     mut scene: fixray::Scene<8>,
-    camera: fn(u16, u16) -> Result<fixray::Camera, fixray::Error>,
-    odd_size: (u16, u16),
+    camera: fn(u32, u32) -> Result<fixray::Camera, fixray::Error>,
+    odd_size: (u32, u32),
 ) {
     for (cols, rows) in [(160, 128), odd_size] {
         let camera = camera(cols, rows).unwrap();
@@ -46,8 +46,12 @@ fn classic_rows_equal_their_pixels_traced_one_by_one() {
 fn orbiting_views_equal_their_pixels_traced_one_by_one() {
     let scene = demo::classic();
     for (yaw, pitch) in [(0.0, 10.0), (70.0, 35.0), (200.0, 5.0), (300.0, 60.0)] {
-        let camera =
-            fixray::Camera::orbit([0.0, 0.0, -16.0], 22.0, yaw, pitch, 60.0, 64, 48).unwrap();
+        let camera = fixray::Camera::orbit([0.0, 0.0, -16.0], 22.0)
+            .yaw_degrees(yaw)
+            .pitch_degrees(pitch)
+            .size(Size::new(64, 48))
+            .build()
+            .unwrap();
         rows_match_tracing_each_pixel(&scene, &camera);
     }
 }
@@ -104,15 +108,10 @@ fn crowded<const N: usize>() -> fixray::Scene<N> {
 
 #[test]
 fn scenes_past_64_objects_equal_their_pixels_traced_one_by_one() {
-    let camera = fixray::Camera::look_at(
-        [0.0, 3.0, 6.0],
-        [0.0, -1.0, -16.0],
-        [0.0, 1.0, 0.0],
-        60.0,
-        96,
-        72,
-    )
-    .unwrap();
+    let camera = fixray::Camera::look_at([0.0, 3.0, 6.0], [0.0, -1.0, -16.0])
+        .size(Size::new(96, 72))
+        .build()
+        .unwrap();
     let mut seventy = crowded::<70>();
     let mut one_thirty = crowded::<130>();
     for shadows in [true, false] {
@@ -124,9 +123,9 @@ fn scenes_past_64_objects_equal_their_pixels_traced_one_by_one() {
     // The objects past the 64th are really in view.
     let seen = |scene: &fixray::Scene<130>| {
         let mut seen = [false; 130];
-        for row in 0..camera.rows() {
-            for col in 0..camera.cols() {
-                if let Some(hit) = scene.shoot(&camera.ray(row, col)) {
+        for row in 0..camera.height() {
+            for col in 0..camera.width() {
+                if let Some(hit) = scene.shoot(&camera.ray(col, row)) {
                     seen[hit.object] = true;
                 }
             }

@@ -1,6 +1,7 @@
 //! Shading, checked against expectations derived from the geometry of each set-up: shadows,
 //! mirrors, highlights, checkerboards and supersampling.
 
+use fixray::Size;
 use fixray::{
     Background, Camera, Fx, Light, Material, Plane, Ray, Rgb, Scene, Sphere, Vec3, render_row,
     render_row_supersampled,
@@ -185,15 +186,11 @@ fn the_highlight_lies_where_the_half_vector_meets_the_normal() {
             shiny,
         )
         .unwrap();
-    let camera = Camera::look_at(
-        [0.0; 3],
-        centre.map(|c| c as f32),
-        [0.0, 1.0, 0.0],
-        25.0,
-        64,
-        64,
-    )
-    .unwrap();
+    let camera = Camera::look_at([0.0; 3], centre.map(|c| c as f32))
+        .fov_degrees(25.0)
+        .size(Size::new(64, 64))
+        .build()
+        .unwrap();
 
     // n·h at a surface point, in f64, from the geometry alone.
     let unit = |a: [f64; 3]| {
@@ -212,7 +209,7 @@ fn the_highlight_lies_where_the_half_vector_meets_the_normal() {
     for y in 0..64 {
         render_row(&scene, &camera, y, &mut row).unwrap();
         for (x, pixel) in row.iter().enumerate() {
-            if let Some(hit) = scene.shoot(&camera.ray(y, x as u16)) {
+            if let Some(hit) = scene.shoot(&camera.ray(x as u32, y)) {
                 let nh = n_dot_h(hit.point.to_f64());
                 best_nh = best_nh.max(nh);
                 if pixel.r > brightest.0 || (pixel.r == brightest.0 && nh > brightest.1) {
@@ -263,7 +260,10 @@ fn supersampling_blends_an_edge() {
             Rgb::WHITE,
         )
         .unwrap();
-    let camera = Camera::pinhole(2.0, 2.0, 1.0, 9, 9).unwrap();
+    let camera = Camera::pinhole(2.0, 2.0, 1.0)
+        .size(Size::new(9, 9))
+        .build()
+        .unwrap();
     let (mut plain, mut smooth) = ([Rgb::BLACK; 9], [Rgb::BLACK; 9]);
     render_row(&scene, &camera, 4, &mut plain).unwrap();
     render_row_supersampled(&scene, &camera, 4, 4, &mut smooth).unwrap();
@@ -293,16 +293,22 @@ fn culling_spheres_per_row_changes_no_pixel() {
         ),
         (
             fixray::demo::classic(),
-            Camera::orbit([0.0, 0.0, -15.0], 15.0, 40.0, 25.0, 50.0, 97, 61).unwrap(),
+            Camera::orbit([0.0, 0.0, -15.0], 15.0)
+                .yaw_degrees(40.0)
+                .pitch_degrees(25.0)
+                .fov_degrees(50.0)
+                .size(Size::new(97, 61))
+                .build()
+                .unwrap(),
         ),
     ] {
-        let mut row = vec![Rgb::BLACK; camera.cols() as usize];
-        for y in 0..camera.rows() {
+        let mut row = vec![Rgb::BLACK; camera.width() as usize];
+        for y in 0..camera.height() {
             render_row(&scene, &camera, y, &mut row).unwrap();
             for (x, &pixel) in row.iter().enumerate() {
                 assert_eq!(
                     pixel,
-                    scene.trace(&camera.ray(y, x as u16)),
+                    scene.trace(&camera.ray(x as u32, y)),
                     "pixel ({x}, {y})"
                 );
             }
@@ -337,7 +343,10 @@ fn materials_and_lights_built_by_hand_out_of_range_do_not_panic() {
     scene
         .add_sphere(Sphere::new(v(0.0, 2.0, -5.0), fx(1.0)).unwrap(), wild)
         .unwrap();
-    let camera = Camera::pinhole(2.0, 2.0, 1.0, 8, 8).unwrap();
+    let camera = Camera::pinhole(2.0, 2.0, 1.0)
+        .size(Size::new(8, 8))
+        .build()
+        .unwrap();
     let mut row = [Rgb::BLACK; 8];
     for y in 0..8 {
         render_row(&scene, &camera, y, &mut row).unwrap();

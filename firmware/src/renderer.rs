@@ -11,10 +11,10 @@ use core::fmt::Debug;
 use fixray::{Camera, Error, Fx, Material, Object, Rgb, Scene, demo};
 use fixray_reference::{self as reference, DCamera, DScene, Real};
 
-/// Columns of the frame.
-pub const COLS: u16 = 160;
-/// Rows of the frame.
-pub const ROWS: u16 = 128;
+/// Columns of the frame (its width).
+pub const COLS: u32 = 160;
+/// Rows of the frame (its height).
+pub const ROWS: u32 = 128;
 
 /// A scene and its camera, as the figures table names them.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -77,7 +77,7 @@ impl Variant {
     }
 
     /// The fixed-point camera for a `cols × rows` frame.
-    pub fn camera(self, cols: u16, rows: u16) -> Result<Camera, Error> {
+    pub fn camera(self, cols: u32, rows: u32) -> Result<Camera, Error> {
         match self {
             Variant::Demo | Variant::DemoNoShadow => demo::camera(cols, rows),
             _ => demo::classic_camera(cols, rows),
@@ -86,7 +86,7 @@ impl Variant {
 
     /// The same camera in the reference model, from the same `f32` constants, in `F`.
     #[must_use]
-    pub fn dcamera<F: Real>(self, cols: u16, rows: u16) -> Option<DCamera<F>> {
+    pub fn dcamera<F: Real>(self, cols: u32, rows: u32) -> Option<DCamera<F>> {
         match self {
             Variant::Demo | Variant::DemoNoShadow => reference::demo_camera(cols, rows),
             _ => reference::classic_camera(cols, rows),
@@ -131,10 +131,10 @@ pub trait Renderer: Sized {
     type Error: Debug;
 
     /// Sets up `variant` for a `cols × rows` frame.
-    fn new(variant: Variant, cols: u16, rows: u16) -> Result<Self, Self::Error>;
+    fn new(variant: Variant, cols: u32, rows: u32) -> Result<Self, Self::Error>;
 
     /// Renders row `row` (0 at the top) into `out`, `cols` pixels long.
-    fn render_row(&self, row: u16, out: &mut [Rgb]) -> Result<(), Self::Error>;
+    fn render_row(&self, row: u32, out: &mut [Rgb]) -> Result<(), Self::Error>;
 }
 
 /// fixray's Q16.16 renderer: integer arithmetic only.
@@ -147,14 +147,14 @@ impl Renderer for Fixed {
     const NAME: &'static str = "fixed";
     type Error = Error;
 
-    fn new(variant: Variant, cols: u16, rows: u16) -> Result<Self, Error> {
+    fn new(variant: Variant, cols: u32, rows: u32) -> Result<Self, Error> {
         Ok(Fixed {
             scene: variant.scene()?,
             camera: variant.camera(cols, rows)?,
         })
     }
 
-    fn render_row(&self, row: u16, out: &mut [Rgb]) -> Result<(), Error> {
+    fn render_row(&self, row: u32, out: &mut [Rgb]) -> Result<(), Error> {
         fixray::render_row(&self.scene, &self.camera, row, out)
     }
 }
@@ -169,14 +169,14 @@ const SKIPS: usize = 4;
 pub struct FixedRays {
     camera: Camera,
     /// For each row, the runs of columns `render_row` makes no rays for.
-    skips: [[(u16, u16); SKIPS]; ROWS as usize],
+    skips: [[(u32, u32); SKIPS]; ROWS as usize],
 }
 
 impl Renderer for FixedRays {
     const NAME: &'static str = "fixed-rays";
     type Error = Error;
 
-    fn new(variant: Variant, cols: u16, rows: u16) -> Result<Self, Error> {
+    fn new(variant: Variant, cols: u32, rows: u32) -> Result<Self, Error> {
         let (scene, camera) = (variant.scene()?, variant.camera(cols, rows)?);
         let mut skips = [[(cols, cols); SKIPS]; ROWS as usize];
         let too_many = Error::CapacityExceeded { capacity: SKIPS };
@@ -204,11 +204,11 @@ impl Renderer for FixedRays {
         Ok(FixedRays { camera, skips })
     }
 
-    fn render_row(&self, row: u16, out: &mut [Rgb]) -> Result<(), Error> {
+    fn render_row(&self, row: u32, out: &mut [Rgb]) -> Result<(), Error> {
         let mut rays = self.camera.row_rays(row)?;
-        let mut col = 0u16;
+        let mut col = 0u32;
         let skips = self.skips.get(row as usize).into_iter().flatten();
-        for &(first, end) in skips.chain([&(self.camera.cols(), self.camera.cols())]) {
+        for &(first, end) in skips.chain([&(self.camera.width(), self.camera.width())]) {
             while col < first {
                 let Some(ray) = rays.next() else { break };
                 if let Some(pixel) = out.get_mut(col as usize) {
@@ -243,16 +243,16 @@ impl Renderer for FixedShoot {
     const NAME: &'static str = "fixed-shoot";
     type Error = Error;
 
-    fn new(variant: Variant, cols: u16, rows: u16) -> Result<Self, Error> {
+    fn new(variant: Variant, cols: u32, rows: u32) -> Result<Self, Error> {
         Ok(FixedShoot {
             scene: variant.scene()?,
             camera: variant.camera(cols, rows)?,
         })
     }
 
-    fn render_row(&self, row: u16, out: &mut [Rgb]) -> Result<(), Error> {
+    fn render_row(&self, row: u32, out: &mut [Rgb]) -> Result<(), Error> {
         let (scene, camera) = (&self.scene, &self.camera);
-        let mut empty = [(0u16, 0u16); SKIPS];
+        let mut empty = [(0u32, 0u32); SKIPS];
         let mut count = 0;
         fixray::shoot_row_skipping(
             scene,
@@ -300,7 +300,7 @@ impl<F: Real> Renderer for Reference<F> {
     };
     type Error = &'static str;
 
-    fn new(variant: Variant, cols: u16, rows: u16) -> Result<Self, Self::Error> {
+    fn new(variant: Variant, cols: u32, rows: u32) -> Result<Self, Self::Error> {
         let scene = variant.scene().map_err(|_| "the fixed scene was refused")?;
         Ok(Reference {
             scene: DScene::from_scene(&scene).ok_or("the scene has no reference twin")?,
@@ -308,7 +308,7 @@ impl<F: Real> Renderer for Reference<F> {
         })
     }
 
-    fn render_row(&self, row: u16, out: &mut [Rgb]) -> Result<(), Self::Error> {
+    fn render_row(&self, row: u32, out: &mut [Rgb]) -> Result<(), Self::Error> {
         reference::render_row(&self.scene, &self.camera, row, out);
         Ok(())
     }

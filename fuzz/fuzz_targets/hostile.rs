@@ -38,7 +38,7 @@ fuzz_target!(|data: &[u8]| {
             fixray::demo::classic()
         };
         for _ in 0..2 {
-            let row = src.below(camera.rows() as u64 + 2) as u16;
+            let row = src.below(camera.height() as u64 + 2) as u32;
             common::check_row(&scene, &camera, row);
         }
         common::check_rays_past_the_screen(&spec, &camera);

@@ -2,18 +2,20 @@
 
 use super::{DRay, DVec3, Real};
 
-/// A pinhole camera: an eye and a view screen of `rows × cols` pixels in front of it.
+/// A pinhole camera: an eye and a view screen of `width × height` pixels in front of it.
 ///
 /// The screen is the rectangle `width × height` centred on the point `centre` (relative to
 /// the eye) and spanned by the unit vectors `right` and `up`. Following the chapter, the
-/// *pixel centre* of chapter row `i` (counted upward from the bottom) and column `j` is
+/// *pixel centre* of chapter row `i` (counted upward from the bottom) and column `j`, for a
+/// screen of `cols × rows` pixels, is
 ///
 /// `p = centre + right·(−width/2 + width/cols·(j + ½)) + up·(−height/2 + height/rows·(i + ½))`
 ///
 /// and the ray through it starts at the eye with direction `p / ‖p‖`.
 ///
-/// [`ray`](Self::ray) takes *display* coordinates instead: row 0 is the top of the picture,
-/// so display row `row` is chapter row `i = rows − 1 − row`. Column 0 is on the left in both.
+/// [`ray`](Self::ray) takes *display* coordinates (`x`, `y`) instead, as fixray's camera
+/// does: column `x` is `j`, and row 0 is the top of the picture, so display row `y` is chapter
+/// row `i = rows − 1 − y`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct DCamera<F: Real = f64> {
     eye: DVec3<F>,
@@ -22,17 +24,23 @@ pub struct DCamera<F: Real = f64> {
     up: DVec3<F>,
     width: F,
     height: F,
-    rows: u16,
-    cols: u16,
+    rows: u32,
+    cols: u32,
+}
+
+/// A count of pixels in precision `F`: exact, as counts are far below 2²⁴.
+fn px<F: Real>(n: u32) -> F {
+    F::from_f64(f64::from(n))
 }
 
 impl<F: Real> DCamera<F> {
     /// The chapter's camera: the eye at the origin looking down −z, and a `w × h` screen at
-    /// distance `z_p`, centred on `(0, 0, −z_p)`, with `rows × cols` pixels.
+    /// distance `z_p`, centred on `(0, 0, −z_p)`, with `cols × rows` pixels (width by
+    /// height).
     ///
-    /// `None` unless `w`, `h` and `z_p` are finite and positive and `rows`, `cols` non-zero.
+    /// `None` unless `w`, `h` and `z_p` are finite and positive and `cols`, `rows` non-zero.
     #[must_use]
-    pub fn pinhole(w: F, h: F, z_p: F, rows: u16, cols: u16) -> Option<Self> {
+    pub fn pinhole(w: F, h: F, z_p: F, cols: u32, rows: u32) -> Option<Self> {
         let positive = |x: F| x.is_finite() && x > F::ZERO;
         if !(positive(w) && positive(h) && positive(z_p)) || rows == 0 || cols == 0 {
             return None;
@@ -67,8 +75,8 @@ impl<F: Real> DCamera<F> {
         target: DVec3<F>,
         up: DVec3<F>,
         fov_y_degrees: F,
-        cols: u16,
-        rows: u16,
+        cols: u32,
+        rows: u32,
     ) -> Option<Self> {
         let fov_ok = fov_y_degrees > F::ZERO && fov_y_degrees < F::from_f64(180.0);
         if !(eye.is_finite() && fov_ok) || rows == 0 || cols == 0 {
@@ -79,7 +87,7 @@ impl<F: Real> DCamera<F> {
         let u = right.cross(f);
         let half_angle = fov_y_degrees.to_radians() / F::TWO;
         let height = F::TWO * half_angle.tan();
-        let width = height * F::from_u16(cols) / F::from_u16(rows);
+        let width = height * px::<F>(cols) / px::<F>(rows);
         Some(DCamera {
             eye,
             centre: f,
@@ -92,18 +100,18 @@ impl<F: Real> DCamera<F> {
         })
     }
 
-    /// Pixel rows in the picture.
+    /// The picture's width in pixels (its columns).
     #[inline]
     #[must_use]
-    pub const fn rows(&self) -> u16 {
-        self.rows
+    pub const fn width(&self) -> u32 {
+        self.cols
     }
 
-    /// Pixel columns in the picture.
+    /// The picture's height in pixels (its rows).
     #[inline]
     #[must_use]
-    pub const fn cols(&self) -> u16 {
-        self.cols
+    pub const fn height(&self) -> u32 {
+        self.rows
     }
 
     /// The eye: where every ray starts.
@@ -113,50 +121,50 @@ impl<F: Real> DCamera<F> {
         self.eye
     }
 
-    /// The pixel centre of display pixel (`row`, `col`) on the view screen, in world
+    /// The pixel centre of display pixel (`x`, `y`) on the view screen, in world
     /// coordinates.
     ///
-    /// Coordinates past the last row or column extrapolate the grid; they do not fail.
+    /// Coordinates past the last column or row extrapolate the grid; they do not fail.
     #[must_use]
-    pub fn pixel_centre(&self, row: u16, col: u16) -> DVec3<F> {
-        self.eye + self.towards(row, col)
+    pub fn pixel_centre(&self, x: u32, y: u32) -> DVec3<F> {
+        self.eye + self.towards(x, y)
     }
 
-    /// From the eye to the pixel centre of display pixel (`row`, `col`): the chapter's `p`.
-    fn towards(&self, row: u16, col: u16) -> DVec3<F> {
+    /// From the eye to the pixel centre of display pixel (`x`, `y`): the chapter's `p`.
+    fn towards(&self, x: u32, y: u32) -> DVec3<F> {
         // Chapter row i counts up from the bottom; display rows count down from the top.
-        let i = F::from_u16(self.rows) - F::ONE - F::from_u16(row);
-        let j = F::from_u16(col);
+        let i = px::<F>(self.rows) - F::ONE - px::<F>(y);
+        let j = px::<F>(x);
         let half = F::from_f64(0.5);
-        let x = -self.width / F::TWO + self.width / F::from_u16(self.cols) * (j + half);
-        let y = -self.height / F::TWO + self.height / F::from_u16(self.rows) * (i + half);
-        self.centre + self.right * x + self.up * y
+        let across = -self.width / F::TWO + self.width / px::<F>(self.cols) * (j + half);
+        let up = -self.height / F::TWO + self.height / px::<F>(self.rows) * (i + half);
+        self.centre + self.right * across + self.up * up
     }
 
-    /// The ray shot through the pixel centre of display pixel (`row`, `col`).
+    /// The ray shot through the pixel centre of display pixel (`x`, `y`).
     #[must_use]
-    pub fn ray(&self, row: u16, col: u16) -> DRay<F> {
-        let p = self.towards(row, col);
+    pub fn ray(&self, x: u32, y: u32) -> DRay<F> {
+        let p = self.towards(x, y);
         // The screen is never at the eye (its centre is a non-zero distance straight ahead),
         // so p has a direction.
         DRay::new_unchecked(self.eye, p.normalize_or_zero())
     }
 
     /// The ray through sample (`sx`, `sy`) of an `n × n` grid of sub-pixel centres in pixel
-    /// (`row`, `col`), for supersampling: the sample sits `(2sx + 1)/(2n)` of a pixel right of
+    /// (`x`, `y`), for supersampling: the sample sits `(2sx + 1)/(2n)` of a pixel right of
     /// the pixel's left edge and `(2sy + 1)/(2n)` below its top edge. `n = 1` is the pixel
     /// centre.
     #[must_use]
-    pub fn sample_ray(&self, row: u16, col: u16, sx: u8, sy: u8, n: u8) -> DRay<F> {
+    pub fn sample_ray(&self, x: u32, y: u32, sx: u8, sy: u8, n: u8) -> DRay<F> {
         let n = F::from_u16(u16::from(n.max(1)));
         let offset = |s: u8| (F::TWO * F::from_u16(u16::from(s)) + F::ONE) / (F::TWO * n);
         // Positions in pixels from the top left; the chapter's y grows upward.
-        let across = F::from_u16(col) + offset(sx);
-        let down = F::from_u16(row) + offset(sy);
-        let x = -self.width / F::TWO + self.width / F::from_u16(self.cols) * across;
-        let y = -self.height / F::TWO
-            + self.height / F::from_u16(self.rows) * (F::from_u16(self.rows) - down);
-        let p = self.centre + self.right * x + self.up * y;
+        let across = px::<F>(x) + offset(sx);
+        let down = px::<F>(y) + offset(sy);
+        let right = -self.width / F::TWO + self.width / px::<F>(self.cols) * across;
+        let up =
+            -self.height / F::TWO + self.height / px::<F>(self.rows) * (px::<F>(self.rows) - down);
+        let p = self.centre + self.right * right + self.up * up;
         DRay::new_unchecked(self.eye, p.normalize_or_zero())
     }
 }
@@ -172,17 +180,17 @@ mod tests {
     #[test]
     fn the_chapter_grid_has_its_middle_pixel_on_the_axis() {
         // M = 3 rows by N = 5 columns on a 5 × 3 screen at z_p = 1: 1 × 1 pixels.
-        let cam = DCamera::pinhole(5.0, 3.0, 1.0, 3, 5).unwrap();
-        assert_eq!(cam.pixel_centre(1, 2), DVec3::new(0.0, 0.0, -1.0));
-        assert_eq!(cam.ray(1, 2).dir(), -DVec3::Z);
-        assert_eq!(cam.ray(1, 2).origin(), DVec3::ZERO);
+        let cam = DCamera::pinhole(5.0, 3.0, 1.0, 5, 3).unwrap();
+        assert_eq!(cam.pixel_centre(2, 1), DVec3::new(0.0, 0.0, -1.0));
+        assert_eq!(cam.ray(2, 1).dir(), -DVec3::Z);
+        assert_eq!(cam.ray(2, 1).origin(), DVec3::ZERO);
     }
 
     #[test]
     fn display_row_0_is_the_top_and_col_0_the_left() {
-        let cam = DCamera::pinhole(5.0, 3.0, 1.0, 3, 5).unwrap();
+        let cam = DCamera::pinhole(5.0, 3.0, 1.0, 5, 3).unwrap();
         assert_eq!(cam.pixel_centre(0, 0), DVec3::new(-2.0, 1.0, -1.0));
-        assert_eq!(cam.pixel_centre(2, 4), DVec3::new(2.0, -1.0, -1.0));
+        assert_eq!(cam.pixel_centre(4, 2), DVec3::new(2.0, -1.0, -1.0));
         let d = cam.ray(0, 0).dir();
         assert!(close(d, DVec3::new(-2.0, 1.0, -1.0) / libm::sqrt(6.0)));
     }
@@ -191,11 +199,11 @@ mod tests {
     fn look_at_down_minus_z_is_the_pinhole_camera() {
         // hh = 2·tan(45°) = 2 at distance 1, ww = 2 · 4/2 = 4.
         let cam = DCamera::look_at(DVec3::ZERO, -DVec3::Z, DVec3::Y, 90.0, 4, 2).unwrap();
-        let pin = DCamera::pinhole(4.0, 2.0, 1.0, 2, 4).unwrap();
+        let pin = DCamera::pinhole(4.0, 2.0, 1.0, 4, 2).unwrap();
         for row in 0..2 {
             for col in 0..4 {
                 assert!(
-                    close(cam.ray(row, col).dir(), pin.ray(row, col).dir()),
+                    close(cam.ray(col, row).dir(), pin.ray(col, row).dir()),
                     "{row},{col}"
                 );
             }
@@ -210,15 +218,15 @@ mod tests {
         assert_eq!(cam.ray(1, 1).origin(), eye);
         assert!(close(cam.ray(1, 1).dir(), -DVec3::Z));
         assert!(close(cam.pixel_centre(1, 1), DVec3::new(0.0, 2.0, 4.0)));
-        assert!(cam.ray(0, 1).dir().y > 0.0, "row 0 looks up");
-        assert!(cam.ray(1, 0).dir().x < 0.0, "col 0 looks left");
+        assert!(cam.ray(1, 0).dir().y > 0.0, "row 0 looks up");
+        assert!(cam.ray(0, 1).dir().x < 0.0, "col 0 looks left");
     }
 
     #[test]
     fn degenerate_cameras_are_refused() {
         assert_eq!(DCamera::pinhole(0.0, 1.0, 1.0, 2, 2), None);
         assert_eq!(DCamera::pinhole(1.0, 1.0, f64::NAN, 2, 2), None);
-        assert_eq!(DCamera::pinhole(1.0, 1.0, 1.0, 0, 2), None);
+        assert_eq!(DCamera::pinhole(1.0, 1.0, 1.0, 2, 0), None);
         let (o, y) = (DVec3::ZERO, DVec3::Y);
         assert_eq!(DCamera::look_at(o, o, y, 60.0, 2, 2), None);
         assert_eq!(DCamera::look_at(o, y, y, 60.0, 2, 2), None);

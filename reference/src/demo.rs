@@ -4,20 +4,22 @@ use super::{DCamera, DVec3, Real};
 use fixray::demo;
 
 /// The twin of [`demo::camera`]: the chapter's pinhole camera with a screen
-/// `SCREEN_HEIGHT · cols / rows` wide and [`demo::SCREEN_HEIGHT`] high at
-/// [`demo::SCREEN_DISTANCE`], in precision `F`. `None` for a screen without pixels.
+/// `SCREEN_HEIGHT · width / height` wide and [`demo::SCREEN_HEIGHT`] high at
+/// [`demo::SCREEN_DISTANCE`], `width × height` pixels, in precision `F`. `None` for a screen
+/// without pixels.
 #[must_use]
-pub fn demo_camera<F: Real>(cols: u16, rows: u16) -> Option<DCamera<F>> {
+pub fn demo_camera<F: Real>(width: u32, height: u32) -> Option<DCamera<F>> {
     let h = F::from_f64(f64::from(demo::SCREEN_HEIGHT));
-    let w = h * F::from_u16(cols) / F::from_u16(rows);
+    let w = h * F::from_f64(f64::from(width)) / F::from_f64(f64::from(height));
     let z_p = F::from_f64(f64::from(demo::SCREEN_DISTANCE));
-    DCamera::pinhole(w, h, z_p, rows, cols)
+    DCamera::pinhole(w, h, z_p, width, height)
 }
 
 /// The twin of [`demo::classic_camera`]: the look-at camera at the origin looking down −z with
-/// a [`demo::CLASSIC_FOV_DEGREES`] vertical field of view, in precision `F`.
+/// a [`demo::CLASSIC_FOV_DEGREES`] vertical field of view, `width × height` pixels, in
+/// precision `F`.
 #[must_use]
-pub fn classic_camera<F: Real>(cols: u16, rows: u16) -> Option<DCamera<F>> {
+pub fn classic_camera<F: Real>(width: u32, height: u32) -> Option<DCamera<F>> {
     let fov = F::from_f64(f64::from(demo::CLASSIC_FOV_DEGREES));
-    DCamera::look_at(DVec3::ZERO, -DVec3::Z, DVec3::Y, fov, cols, rows)
+    DCamera::look_at(DVec3::ZERO, -DVec3::Z, DVec3::Y, fov, width, height)
 }

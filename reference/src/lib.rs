@@ -46,10 +46,10 @@
 //! let mut frame = [Rgb::BLACK; 6 * 8];
 //! render(&twin, &twin_camera, &mut frame);
 //! assert_eq!(frame[0], demo::BACKGROUND); // the top-left pixel is sky
-//! for (row, col) in [(0, 0), (3, 2), (5, 7)] {
+//! for (x, y) in [(0, 0), (2, 3), (7, 5)] {
 //!     // Both models see the same object through each pixel.
-//!     let fixed = scene.shoot(&camera.ray(row, col)).map(|hit| hit.object);
-//!     let reference = twin.shoot(&twin_camera.ray(row, col)).map(|hit| hit.object);
+//!     let fixed = scene.shoot(&camera.ray(x, y)).map(|hit| hit.object);
+//!     let reference = twin.shoot(&twin_camera.ray(x, y)).map(|hit| hit.object);
 //!     assert_eq!(fixed, reference);
 //! }
 //! # Ok::<(), fixray::Error>(())

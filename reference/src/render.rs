@@ -3,28 +3,28 @@
 use super::{DCamera, DScene, Real};
 use fixray::Rgb;
 
-/// Shades display row `row` (0 is the top) into `out`, one colour per column, left to right.
+/// Shades display row `y` (0 is the top) into `out`, one colour per column, left to right.
 ///
 /// For each column this is the chapter's loop body: build the ray through the pixel centre,
 /// `shoot` it into the scene, and `shade` what it hit ([`DScene::trace`]).
 ///
 /// # Panics
 ///
-/// If `out.len()` is not `camera.cols()`: the reference is test machinery, and a buffer of
+/// If `out.len()` is not `camera.width()`: the reference is test machinery, and a buffer of
 /// the wrong size is a bug in the test.
 pub fn render_row<const N: usize, const L: usize, F: Real>(
     scene: &DScene<N, L, F>,
     camera: &DCamera<F>,
-    row: u16,
+    y: u32,
     out: &mut [Rgb],
 ) {
     assert_eq!(
         out.len(),
-        usize::from(camera.cols()),
-        "row buffer length must equal cols"
+        camera.width() as usize,
+        "row buffer length must equal the width"
     );
-    for (col, pixel) in (0..camera.cols()).zip(out.iter_mut()) {
-        *pixel = scene.trace(&camera.ray(row, col)).1;
+    for (x, pixel) in (0..camera.width()).zip(out.iter_mut()) {
+        *pixel = scene.trace(&camera.ray(x, y)).1;
     }
 }
 
@@ -33,26 +33,26 @@ pub fn render_row<const N: usize, const L: usize, F: Real>(
 ///
 /// # Panics
 ///
-/// If `out` is not `camera.cols()` long.
+/// If `out` is not `camera.width()` long.
 pub fn render_row_supersampled<const N: usize, const L: usize, F: Real>(
     scene: &DScene<N, L, F>,
     camera: &DCamera<F>,
-    row: u16,
+    y: u32,
     n: u8,
     out: &mut [Rgb],
 ) {
     assert_eq!(
         out.len(),
-        usize::from(camera.cols()),
-        "row buffer length must equal cols"
+        camera.width() as usize,
+        "row buffer length must equal the width"
     );
     let n = n.clamp(1, 16);
     let count = u32::from(n) * u32::from(n);
-    for (col, pixel) in (0..camera.cols()).zip(out.iter_mut()) {
+    for (x, pixel) in (0..camera.width()).zip(out.iter_mut()) {
         let mut sum = [0u32; 3];
         for sy in 0..n {
             for sx in 0..n {
-                let c = scene.trace(&camera.sample_ray(row, col, sx, sy, n)).1;
+                let c = scene.trace(&camera.sample_ray(x, y, sx, sy, n)).1;
                 for (s, v) in sum.iter_mut().zip([c.r, c.g, c.b]) {
                     *s += u32::from(v);
                 }
@@ -63,26 +63,26 @@ pub fn render_row_supersampled<const N: usize, const L: usize, F: Real>(
     }
 }
 
-/// Shades the whole picture into `out`, row-major with row 0 at the top: pixel (`row`, `col`)
-/// is `out[row · cols + col]`.
+/// Shades the whole picture into `out`, row-major with row 0 at the top: pixel (`x`, `y`)
+/// is `out[y · width + x]`.
 ///
 /// # Panics
 ///
-/// If `out.len()` is not `camera.rows() · camera.cols()`.
+/// If `out.len()` is not `camera.width() · camera.height()`.
 pub fn render<const N: usize, const L: usize, F: Real>(
     scene: &DScene<N, L, F>,
     camera: &DCamera<F>,
     out: &mut [Rgb],
 ) {
-    let cols = usize::from(camera.cols());
-    let pixels = usize::from(camera.rows()) * cols;
+    let width = camera.width() as usize;
+    let pixels = camera.height() as usize * width;
     assert_eq!(
         out.len(),
         pixels,
-        "frame buffer length must equal rows · cols"
+        "frame buffer length must equal width · height"
     );
-    for (row, line) in (0..camera.rows()).zip(out.chunks_exact_mut(cols)) {
-        render_row(scene, camera, row, line);
+    for (y, line) in (0..camera.height()).zip(out.chunks_exact_mut(width)) {
+        render_row(scene, camera, y, line);
     }
 }
 
@@ -125,15 +125,15 @@ mod tests {
         let mut frame = [Rgb::BLACK; 20];
         render(&scene(), &cam, &mut frame);
         let mut line = [Rgb::BLACK; 5];
-        for row in 0..4u16 {
-            render_row(&scene(), &cam, row, &mut line);
-            let start = usize::from(row) * 5;
+        for y in 0..4u32 {
+            render_row(&scene(), &cam, y, &mut line);
+            let start = y as usize * 5;
             assert_eq!(line, frame[start..start + 5]);
         }
     }
 
     #[test]
-    #[should_panic(expected = "rows · cols")]
+    #[should_panic(expected = "width · height")]
     fn a_wrong_sized_frame_is_refused() {
         let cam = DCamera::pinhole(3.0, 3.0, 1.0, 3, 3).unwrap();
         render(&scene(), &cam, &mut [Rgb::BLACK; 8]);

@@ -76,12 +76,12 @@ impl<'a, const N: usize, const L: usize> Viewport<'a, N, L> {
     /// Places the camera's picture on `area` of a display, for code that holds the rectangle;
     /// [`Viewport::at`] needs only its corner.
     ///
-    /// `area` must be exactly `camera.cols() × camera.rows()` pixels
+    /// `area` must be exactly [`Camera::size`] pixels
     /// ([`Error::SizeMismatch`] otherwise), and its far corner must be a representable
     /// display point ([`Error::ViewportOverflow`] otherwise).
     pub fn new(scene: &'a Scene<N, L>, camera: &'a Camera, area: Rectangle) -> Result<Self, Error> {
         let (cols, rows) = (camera.cols(), camera.rows());
-        if area.size != Size::new(cols.into(), rows.into()) {
+        if area.size != camera.size() {
             let clamp = |v: u32| v.min(u16::MAX.into()) as u16;
             return Err(Error::SizeMismatch {
                 camera: (cols, rows),
@@ -102,10 +102,10 @@ impl<'a, const N: usize, const L: usize> Viewport<'a, N, L> {
         self.top_left
     }
 
-    /// The picture's size, the camera's: columns by rows.
+    /// The picture's size, the camera's: width by height.
     #[must_use]
-    pub fn size(&self) -> Size {
-        Size::new(self.camera.cols().into(), self.camera.rows().into())
+    pub const fn size(&self) -> Size {
+        self.camera.size()
     }
 
     /// The display rectangle the picture covers, on the display or not.
@@ -117,7 +117,7 @@ impl<'a, const N: usize, const L: usize> Viewport<'a, N, L> {
     /// Renders rows `rows` of the picture (0 is the picture's top row) onto `display`,
     /// clipped to the display.
     ///
-    /// `buffer` must hold at least one row (`camera.cols()` pixels, even when fewer columns
+    /// `buffer` must hold at least one row (`camera.width()` pixels, even when fewer columns
     /// show); each `fill_contiguous` call sends as many rows as it holds, each cut to its
     /// visible columns. Rows off the display are skipped before they are traced. Rows past the
     /// picture's last are an error ([`Error::RowOutOfRange`], the last row asked for), a
@@ -126,7 +126,7 @@ impl<'a, const N: usize, const L: usize> Viewport<'a, N, L> {
     /// render and is returned as [`DrawError::Display`], unchanged.
     pub fn render_rows<D>(
         &self,
-        rows: Range<u16>,
+        rows: Range<u32>,
         buffer: &mut [Rgb],
         display: &mut D,
     ) -> Result<(), DrawError<D::Error>>
@@ -134,8 +134,8 @@ impl<'a, const N: usize, const L: usize> Viewport<'a, N, L> {
         D: DrawTarget,
         D::Color: FromRgb,
     {
-        self.draw_rows(rows, buffer, display, |row, line| {
-            render_row(self.scene, self.camera, row, line)
+        self.draw_rows(rows, buffer, display, |y, line| {
+            render_row(self.scene, self.camera, y, line)
         })
     }
 
@@ -145,7 +145,7 @@ impl<'a, const N: usize, const L: usize> Viewport<'a, N, L> {
         D: DrawTarget,
         D::Color: FromRgb,
     {
-        self.render_rows(0..self.camera.rows(), buffer, display)
+        self.render_rows(0..self.camera.height(), buffer, display)
     }
 
     /// The picture as an embedded-graphics [`Drawable`](embedded_graphics::Drawable) in
@@ -193,19 +193,19 @@ impl<'a, const N: usize, const L: usize> Viewport<'a, N, L> {
     /// # Ok::<(), fixray::Error>(())
     /// ```
     #[must_use]
-    pub fn bands(&self, rows_per_band: u16) -> Bands {
+    pub fn bands(&self, rows_per_band: u32) -> Bands {
         Bands {
             next: 0,
-            end: self.camera.rows(),
+            end: self.camera.height(),
             step: rows_per_band.max(1),
         }
     }
 
-    /// [`render_rows`](Self::render_rows) with the row tracer `trace(row, line)` as a
+    /// [`render_rows`](Self::render_rows) with the row tracer `trace(y, line)` as a
     /// parameter, so the crate's tests can count which rows are traced.
     pub(crate) fn draw_rows<D, T>(
         &self,
-        rows: Range<u16>,
+        rows: Range<u32>,
         buffer: &mut [Rgb],
         display: &mut D,
         mut trace: T,
@@ -213,15 +213,12 @@ impl<'a, const N: usize, const L: usize> Viewport<'a, N, L> {
     where
         D: DrawTarget,
         D::Color: FromRgb,
-        T: FnMut(u16, &mut [Rgb]) -> Result<(), Error>,
+        T: FnMut(u32, &mut [Rgb]) -> Result<(), Error>,
     {
-        let (cols, total) = (self.camera.cols(), self.camera.rows());
+        let (cols, total) = (self.camera.cols(), self.camera.height());
         if rows.end > total {
-            return Err(Error::RowOutOfRange {
-                row: rows.end - 1,
-                rows: total,
-            }
-            .into());
+            // The last row asked for is past the picture's last: `check_row` refuses it.
+            self.camera.check_row(rows.end - 1)?;
         }
         let width = usize::from(cols);
         // Whole rows that fit the buffer (cols ≥ 1, so the division is never by zero).
@@ -229,7 +226,7 @@ impl<'a, const N: usize, const L: usize> Viewport<'a, N, L> {
             .len()
             .checked_div(width)
             .unwrap_or(0)
-            .min(usize::from(total));
+            .min(total as usize);
         if band_rows == 0 {
             return Err(Error::BufferLength {
                 needed: width,
@@ -237,17 +234,17 @@ impl<'a, const N: usize, const L: usize> Viewport<'a, N, L> {
             }
             .into());
         }
-        // Within the camera's columns and rows, so both fit u16.
+        // Within the camera's columns and rows.
         let (shown_cols, shown_rows) = visible(self.top_left, self.size(), &display.bounding_box());
         let span = shown_cols.start as usize..shown_cols.end as usize;
-        let mut row = rows.start.max(shown_rows.start as u16);
-        let end = rows.end.min(shown_rows.end as u16);
+        let mut row = rows.start.max(shown_rows.start);
+        let end = rows.end.min(shown_rows.end);
         if span.is_empty() {
             return Ok(());
         }
         while row < end {
-            // band_rows ≤ total, a u16.
-            let n = (band_rows as u16).min(end - row);
+            // band_rows ≤ total ≤ 4096.
+            let n = (band_rows as u32).min(end - row);
             for (line, r) in buffer.chunks_exact_mut(width).zip(row..row + n) {
                 trace(r, line)?;
             }
@@ -256,12 +253,12 @@ impl<'a, const N: usize, const L: usize> Viewport<'a, N, L> {
             // On the display, below i32::MAX: `visible` keeps only such pixels.
             let top_left = Point::new(
                 self.top_left.x.wrapping_add(shown_cols.start as i32),
-                self.top_left.y.wrapping_add(i32::from(row)),
+                self.top_left.y.wrapping_add(row as i32),
             );
-            let area = Rectangle::new(top_left, Size::new(span.len() as u32, n.into()));
+            let area = Rectangle::new(top_left, Size::new(span.len() as u32, n));
             let lines = buffer
                 .chunks_exact(width)
-                .take(n.into())
+                .take(n as usize)
                 .map(|line| line.get(span.clone()).unwrap_or_default());
             display
                 .fill_contiguous(&area, converted(lines, top_left))
@@ -282,15 +279,15 @@ impl<const N: usize, const L: usize> Dimensions for Viewport<'_, N, L> {
 /// Row ranges covering a picture, top to bottom: see [`Viewport::bands`].
 #[derive(Debug, Clone)]
 pub struct Bands {
-    next: u16,
-    end: u16,
-    step: u16,
+    next: u32,
+    end: u32,
+    step: u32,
 }
 
 impl Iterator for Bands {
-    type Item = Range<u16>;
+    type Item = Range<u32>;
 
-    fn next(&mut self) -> Option<Range<u16>> {
+    fn next(&mut self) -> Option<Range<u32>> {
         if self.next >= self.end {
             return None;
         }
@@ -300,7 +297,7 @@ impl Iterator for Bands {
     }
 
     fn size_hint(&self) -> (usize, Option<usize>) {
-        let left = usize::from(self.end.saturating_sub(self.next)).div_ceil(usize::from(self.step));
+        let left = (self.end.saturating_sub(self.next) as usize).div_ceil(self.step as usize);
         (left, Some(left))
     }
 }
@@ -348,16 +345,16 @@ mod tests {
         }
     }
 
-    /// Draws a `cols × rows` demo picture at `top_left` on a `display`-sized display through
+    /// Draws a `width × height` demo picture at `top_left` on a `display`-sized display through
     /// the viewport's own row loop, with the real tracer behind a counter: (rows traced,
     /// pixels traced, pixels drawn, pixels drawn outside).
     fn traced(
-        cols: u16,
-        rows: u16,
+        width: u32,
+        height: u32,
         top_left: Point,
         display: Size,
     ) -> (usize, usize, usize, usize) {
-        let (scene, camera) = (demo::scene(), demo::camera(cols, rows).unwrap());
+        let (scene, camera) = (demo::scene(), demo::camera(width, height).unwrap());
         let view = Viewport::at(&scene, &camera, top_left);
         let mut counter = Counter {
             size: display,
@@ -365,12 +362,12 @@ mod tests {
             outside: 0,
         };
         let mut buffer = [Rgb::BLACK; 512 * 4];
-        let buffer = &mut buffer[..usize::from(cols) * 4];
+        let buffer = &mut buffer[..width as usize * 4];
         let (mut traced_rows, mut traced_pixels) = (0, 0);
-        view.draw_rows(0..rows, buffer, &mut counter, |row, line| {
+        view.draw_rows(0..height, buffer, &mut counter, |y, line| {
             traced_rows += 1;
             traced_pixels += line.len();
-            render_row(&scene, &camera, row, line)
+            render_row(&scene, &camera, y, line)
         })
         .unwrap();
         (traced_rows, traced_pixels, counter.drawn, counter.outside)

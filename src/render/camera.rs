@@ -1,6 +1,9 @@
-//! [`Camera`]: the chapter's pinhole camera and the general look-at camera.
+//! [`Camera`]: the chapter's pinhole camera and the general look-at camera, and the builders
+//! that set them up.
 
 use micromath::F32Ext;
+
+use embedded_graphics::geometry::Size;
 
 use crate::error::{CameraProblem, Error, Quantity, within};
 use crate::geometry::ray::Ray;
@@ -10,7 +13,7 @@ use crate::numbers::vec3::Vec3;
 use crate::render::accel::row_rays::RowRays;
 
 /// Largest screen size in pixels, per side.
-pub const MAX_PIXELS: u16 = 4096;
+pub const MAX_PIXELS: u32 = 4096;
 
 /// The ray budget in pixels, `B`: with `F` the view distance and `R` the distance from the
 /// screen's centre to its corner, both in pixels and as rounded to Q16.16, every camera has
@@ -25,11 +28,13 @@ pub const MAX_PIXELS: u16 = 4096;
 /// 2⁻¹⁵ · B = ½. Narrow fields of view meet the budget at `F ≈ B`, wide ones at `F ≈ R²/B`.
 const RAY_BUDGET_PX: u32 = 16_384;
 
-/// A camera: a viewpoint and a screen of `cols × rows` pixels in front of it.
+/// A camera: a viewpoint and a screen of `width × height` pixels in front of it, made by a
+/// builder: [`Camera::look_at`], [`Camera::orbit`] or the chapter's [`Camera::pinhole`].
 ///
-/// Display indexing throughout: row 0 is the top of the picture, column 0 the left. The
-/// chapter numbers its rows upward from the bottom, so its row `i` is display row
-/// `rows − 1 − i`; with that mapping the picture comes out upright.
+/// One coordinate order throughout, embedded-graphics': pixel (`x`, `y`) is column `x` from
+/// the left and row `y` from the top, and sizes are [`Size`]s, width by height. The chapter
+/// numbers its rows upward from the bottom, so its row `i` is display row
+/// `height − 1 − i`; with that mapping the picture comes out upright.
 ///
 /// Ray directions do not depend on the size of the screen, only on its shape, so the camera
 /// stores its screen scaled to make one pixel one unit wide. The pixel-centre offsets are then
@@ -44,12 +49,12 @@ const RAY_BUDGET_PX: u32 = 16_384;
 /// keeps every ray of the screen within half a pixel of the exact one and every intermediate
 /// inside its integer type. In fields of view (vertical, for square pixels):
 ///
-/// | rows × cols | narrowest | widest |
+/// | width × height | narrowest | widest |
 /// |---|---|---|
 /// | 1 × 1 | 0.004° | 179.99° |
-/// | 128 × 160 | 0.448° | 178.85° |
-/// | 240 × 320 | 0.840° | 177.67° |
-/// | 1080 × 1920 | 3.793° | 164.31° |
+/// | 160 × 128 | 0.448° | 178.85° |
+/// | 320 × 240 | 0.840° | 177.67° |
+/// | 1920 × 1080 | 3.793° | 164.31° |
 /// | 4096 × 4096 | 14.721° | 151.03° |
 ///
 /// Outside them the constructors return [`Error::FieldOfViewTooNarrow`] or
@@ -72,11 +77,26 @@ pub struct Camera {
     rows: u16,
 }
 
+/// A screen size as the builders take it, checked to 1..=4096 pixels a side: its width and
+/// height as the camera keeps them.
+fn check_size(size: Size) -> Result<(u16, u16), Error> {
+    if size.width == 0 || size.height == 0 {
+        return Err(Error::DegenerateCamera(CameraProblem::NoPixels));
+    }
+    if size.width > MAX_PIXELS || size.height > MAX_PIXELS {
+        return Err(Error::DegenerateCamera(CameraProblem::TooManyPixels));
+    }
+    // At most 4096: both fit u16.
+    let (cols, rows) = (size.width as u16, size.height as u16);
+    check_resolution(cols, rows)?;
+    Ok((cols, rows))
+}
+
 fn check_resolution(cols: u16, rows: u16) -> Result<(), Error> {
     if cols == 0 || rows == 0 {
         return Err(Error::DegenerateCamera(CameraProblem::NoPixels));
     }
-    if cols > MAX_PIXELS || rows > MAX_PIXELS {
+    if u32::from(cols) > MAX_PIXELS || u32::from(rows) > MAX_PIXELS {
         return Err(Error::DegenerateCamera(CameraProblem::TooManyPixels));
     }
     Ok(())
@@ -252,31 +272,8 @@ impl Camera {
         })
     }
 
-    /// The chapter's pinhole camera: the viewpoint at the origin looking down −z, a view
-    /// screen `w × h` (world units) at distance `z_p`, split into `rows × cols` pixels.
-    ///
-    /// Pixel `(i, j)` of the chapter (row `i` counted upward) has its centre at
-    /// `p_ij = c − (w/2, h/2) + (w/N·(j + ½), h/M·(i + ½))` with `c = (0, 0, −z_p)`.
-    ///
-    /// `w`, `h` and `z_p` must lie in (0, 1024] and the pixel pitches `w/cols` and `h/rows`
-    /// must round to at least 2⁻¹⁶ (else [`Error::OutOfRange`]); pixels may be at most four
-    /// times taller than wide or wider than tall. The view distance `z_p·cols/w` in pixels is
-    /// held to the ray budget of [`Camera`]'s limits: a screen that subtends too narrow or
-    /// too wide a field of view for its number of pixels is refused with the limit.
-    ///
-    /// ```
-    /// use fixray::{Camera, Error, Quantity, Vec3};
-    /// // The chapter's M = 3 by N = 5 screen, 5 × 3 units wide and high, one unit away.
-    /// let cam = Camera::pinhole(5.0, 3.0, 1.0, 3, 5).unwrap();
-    /// // Chapter pixel (0, 0) is bottom left: display row 2, column 0.
-    /// assert_eq!(cam.pixel_centre(2, 0), Vec3::from_ints(-2, -1, -1));
-    /// // A screen a millionth of a pixel from the eye has no view.
-    /// assert!(matches!(
-    ///     Camera::pinhole(1.0, 1.0, 1e-6, 1, 1),
-    ///     Err(Error::OutOfRange { quantity: Quantity::ScreenDistance, .. })
-    /// ));
-    /// ```
-    pub fn pinhole(w: f32, h: f32, z_p: f32, rows: u16, cols: u16) -> Result<Self, Error> {
+    /// The pinhole camera of [`Camera::pinhole`], its size in pixels checked.
+    fn pinhole_checked(w: f32, h: f32, z_p: f32, cols: u16, rows: u16) -> Result<Self, Error> {
         check_resolution(cols, rows)?;
         positive(w, Quantity::ScreenWidth)?;
         positive(h, Quantity::ScreenHeight)?;
@@ -302,38 +299,8 @@ impl Camera {
         )
     }
 
-    /// The general camera: at `eye`, looking at `target`, with `up` giving the upward
-    /// direction of the picture and a vertical field of view of `fov_y_degrees`.
-    ///
-    /// Pixels are square. The screen sits one unit in front of the eye, `2·tan(fov/2)` high,
-    /// `rows / (2·tan(fov/2))` pixels away. Degenerate input — `target == eye`, `up` zero or
-    /// parallel to the view, a field of view outside (0°, 180°), no pixels — is an error.
-    ///
-    /// The field of view must also suit the number of rows (see [`Camera`]'s limits): at
-    /// least about `2·atan(rows / 32 768)`: 0.84° at 320 × 240, 3.8° at 1920 × 1080, 14.7° at
-    /// 4096 × 4096
-    /// ([`Error::FieldOfViewTooNarrow`], which names the smallest allowed in thousandths of
-    /// a degree), and not so wide that the view distance drops below about `R²/16 384`
-    /// pixels for a screen `R` pixels from centre to corner ([`Error::FieldOfViewTooWide`]).
-    /// Within them every ray is within half a pixel of the exact one; `docs/ACCURACY_FOV.md`
-    /// has the measured agreement with an f64 renderer across fields of view.
-    ///
-    /// The tangent is libm's `tanf`, correctly rounded to within an ulp. (micromath's `tan`
-    /// is 0.07 % off at 60° and 0.19 % at 45°; measured against the f64 reference, that
-    /// error alone moved silhouettes enough to drop object agreement on the demo scene from
-    /// 100 % to 99.97 % and raise the largest channel error from 1 to 4.)
-    ///
-    /// ```
-    /// use fixray::{Camera, CameraProblem, Error};
-    /// let cam = Camera::look_at([0.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0], 60.0, 160, 128);
-    /// assert!(cam.is_ok());
-    /// let bad = Camera::look_at([0.0; 3], [0.0, 5.0, 0.0], [0.0, 1.0, 0.0], 60.0, 160, 128);
-    /// assert_eq!(bad, Err(Error::DegenerateCamera(CameraProblem::UpAlongView)));
-    /// // A telephoto view of half a degree needs fewer rows than 240.
-    /// let narrow = Camera::look_at([0.0; 3], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0], 0.5, 320, 240);
-    /// assert_eq!(narrow, Err(Error::FieldOfViewTooNarrow { min_millidegrees: 840 }));
-    /// ```
-    pub fn look_at(
+    /// The look-at camera of [`Camera::look_at`], its size in pixels checked.
+    fn look_at_checked(
         eye: [f32; 3],
         target: [f32; 3],
         up: [f32; 3],
@@ -380,22 +347,9 @@ impl Camera {
         )
     }
 
-    /// A look-at camera circling `target` at `distance`: `yaw_degrees` turns it about the
-    /// vertical (+y) axis, 0° placing the eye on the +z side, and `pitch_degrees` raises it above
-    /// the horizon (strictly between −90° and 90°). Up is +y.
-    ///
-    /// The eye's position uses micromath's `sin` and `cos` (about 10⁻³ absolute error), which
-    /// moves the eye slightly along its orbit but never off the view it aims at: the view
-    /// direction is still exactly `target − eye`.
-    ///
-    /// ```
-    /// use fixray::{Camera, Fx};
-    /// let cam = Camera::orbit([0.0, 0.0, -16.0], 16.0, 0.0, 0.0, 60.0, 160, 128).unwrap();
-    /// // Yaw 0, pitch 0: the eye sits on the +z side, at the origin.
-    /// assert!(cam.eye().x.abs() < Fx::from_num(0.05) && cam.eye().z.abs() < Fx::from_num(0.05));
-    /// assert!(Camera::orbit([0.0; 3], 10.0, 0.0, 90.0, 60.0, 160, 128).is_err());
-    /// ```
-    pub fn orbit(
+    /// The orbiting camera of [`Camera::orbit`], its size in pixels checked.
+    #[allow(clippy::too_many_arguments)]
+    fn orbit_checked(
         target: [f32; 3],
         distance: f32,
         yaw_degrees: f32,
@@ -423,18 +377,155 @@ impl Camera {
             target[1] + distance * F32Ext::sin(pitch),
             target[2] + flat * F32Ext::cos(yaw),
         ];
-        Camera::look_at(eye, target, [0.0, 1.0, 0.0], fov_y_degrees, cols, rows)
+        Camera::look_at_checked(eye, target, [0.0, 1.0, 0.0], fov_y_degrees, cols, rows)
     }
 
-    /// Columns (pixels across).
+    /// The chapter's pinhole camera: the viewpoint at the origin looking down −z, a view
+    /// screen `screen_w × screen_h` (world units) at distance `distance`; split into pixels by
+    /// [`Pinhole::size`] and made by [`Pinhole::build`].
+    ///
+    /// With a screen of `M` rows and `N` columns, pixel `(i, j)` of the chapter (row `i`
+    /// counted upward from the bottom, column `j`) has its centre at
+    /// `p_ij = c − (w/2, h/2) + (w/N·(j + ½), h/M·(i + ½))` with `c = (0, 0, −distance)`: it is
+    /// display pixel `(x, y) = (j, M − 1 − i)`.
+    ///
+    /// `screen_w`, `screen_h` and `distance` must lie in (0, 1024] and the pixel pitches
+    /// `screen_w/width` and `screen_h/height` must round to at least 2⁻¹⁶ (else
+    /// [`Error::OutOfRange`]); pixels may be at most four times taller than wide or wider
+    /// than tall. The view distance `distance·width/screen_w` in pixels is held to the ray
+    /// budget of [`Camera`]'s limits: a screen that subtends too narrow or too wide a field of
+    /// view for its number of pixels is refused with the limit.
+    ///
+    /// ```
+    /// use embedded_graphics::geometry::Size;
+    /// use fixray::{Camera, Error, Quantity, Vec3};
+    /// // The chapter's M = 3 by N = 5 screen, 5 × 3 units wide and high, one unit away.
+    /// let cam = Camera::pinhole(5.0, 3.0, 1.0).size(Size::new(5, 3)).build()?;
+    /// // Chapter pixel (0, 0) is bottom left: column 0, display row 2.
+    /// assert_eq!(cam.pixel_centre(0, 2), Vec3::from_ints(-2, -1, -1));
+    /// // A screen a millionth of a pixel from the eye has no view.
+    /// assert!(matches!(
+    ///     Camera::pinhole(1.0, 1.0, 1e-6).size(Size::new(1, 1)).build(),
+    ///     Err(Error::OutOfRange { quantity: Quantity::ScreenDistance, .. })
+    /// ));
+    /// # Ok::<(), Error>(())
+    /// ```
+    pub const fn pinhole(screen_w: f32, screen_h: f32, distance: f32) -> Pinhole {
+        Pinhole {
+            screen_w,
+            screen_h,
+            distance,
+            size: Size::zero(),
+        }
+    }
+
+    /// The general camera: at `eye`, looking at `target`. [`LookAt::up`] gives the upward
+    /// direction of the picture (+y unless set), [`LookAt::fov_degrees`] the vertical field
+    /// of view (60° unless set), [`LookAt::size`] the screen in pixels, and
+    /// [`LookAt::build`] makes it.
+    ///
+    /// Pixels are square. The screen sits one unit in front of the eye, `2·tan(fov/2)` high,
+    /// `height / (2·tan(fov/2))` pixels away. Degenerate input — `target == eye`, `up` zero
+    /// or parallel to the view, a field of view outside (0°, 180°), no pixels — is an error.
+    ///
+    /// The field of view must also suit the number of rows (see [`Camera`]'s limits): at
+    /// least about `2·atan(height / 32 768)`: 0.84° at 320 × 240, 3.8° at 1920 × 1080, 14.7°
+    /// at 4096 × 4096 ([`Error::FieldOfViewTooNarrow`], which names the smallest allowed in
+    /// thousandths of a degree), and not so wide that the view distance drops below about
+    /// `R²/16 384` pixels for a screen `R` pixels from centre to corner
+    /// ([`Error::FieldOfViewTooWide`]). Within them every ray is within half a pixel of the
+    /// exact one; `docs/ACCURACY_FOV.md` has the measured agreement with an f64 renderer
+    /// across fields of view.
+    ///
+    /// The tangent is libm's `tanf`, correctly rounded to within an ulp. (micromath's `tan`
+    /// is 0.07 % off at 60° and 0.19 % at 45°; measured against the f64 reference, that
+    /// error alone moved silhouettes enough to drop object agreement on the demo scene from
+    /// 100 % to 99.97 % and raise the largest channel error from 1 to 4.)
+    ///
+    /// ```
+    /// use embedded_graphics::geometry::Size;
+    /// use fixray::{Camera, Error};
+    /// let size = Size::new(160, 128);
+    /// let cam = Camera::look_at([0.0, 0.0, 0.0], [0.0, 0.0, -1.0]).size(size).build();
+    /// assert!(cam.is_ok());
+    /// // Looking straight up, the default up (+y) gives the picture no up.
+    /// let bad = Camera::look_at([0.0; 3], [0.0, 5.0, 0.0]).size(size).build();
+    /// assert!(matches!(bad, Err(Error::DegenerateCamera { .. })));
+    /// let fine = Camera::look_at([0.0; 3], [0.0, 5.0, 0.0]).up([0.0, 0.0, -1.0]).size(size);
+    /// assert!(fine.build().is_ok());
+    /// // A telephoto view of half a degree needs fewer rows than 240.
+    /// let narrow = Camera::look_at([0.0; 3], [0.0, 0.0, -1.0])
+    ///     .fov_degrees(0.5)
+    ///     .size(Size::new(320, 240))
+    ///     .build();
+    /// assert_eq!(narrow, Err(Error::FieldOfViewTooNarrow { min_millidegrees: 840 }));
+    /// ```
+    pub const fn look_at(eye: [f32; 3], target: [f32; 3]) -> LookAt {
+        LookAt {
+            eye,
+            target,
+            up: [0.0, 1.0, 0.0],
+            fov_degrees: DEFAULT_FOV_DEGREES,
+            size: Size::zero(),
+        }
+    }
+
+    /// A look-at camera circling `target` at `distance`: [`Orbit::yaw_degrees`] turns it
+    /// about the vertical (+y) axis, 0° (unless set) placing the eye on the +z side, and
+    /// [`Orbit::pitch_degrees`] raises it above the horizon (strictly between −90° and 90°;
+    /// 0° unless set). Up is +y; the field of view and size are set as for
+    /// [`Camera::look_at`].
+    ///
+    /// The eye's position uses micromath's `sin` and `cos` (about 10⁻³ absolute error), which
+    /// moves the eye slightly along its orbit but never off the view it aims at: the view
+    /// direction is still exactly `target − eye`.
+    ///
+    /// ```
+    /// use embedded_graphics::geometry::Size;
+    /// use fixray::{Camera, Fx};
+    /// let cam = Camera::orbit([0.0, 0.0, -16.0], 16.0).size(Size::new(160, 128)).build()?;
+    /// // Yaw 0, pitch 0: the eye sits on the +z side, at the origin.
+    /// assert!(cam.eye().x.abs() < Fx::from_num(0.05) && cam.eye().z.abs() < Fx::from_num(0.05));
+    /// let overhead = Camera::orbit([0.0; 3], 10.0).pitch_degrees(90.0);
+    /// assert!(overhead.size(Size::new(160, 128)).build().is_err());
+    /// # Ok::<(), fixray::Error>(())
+    /// ```
+    pub const fn orbit(target: [f32; 3], distance: f32) -> Orbit {
+        Orbit {
+            target,
+            distance,
+            yaw_degrees: 0.0,
+            pitch_degrees: 0.0,
+            fov_degrees: DEFAULT_FOV_DEGREES,
+            size: Size::zero(),
+        }
+    }
+
+    /// The screen's size in pixels: width (columns) by height (rows).
     #[must_use]
-    pub const fn cols(&self) -> u16 {
+    pub const fn size(&self) -> Size {
+        Size::new(self.cols as u32, self.rows as u32)
+    }
+
+    /// The screen's width in pixels (its columns).
+    #[must_use]
+    pub const fn width(&self) -> u32 {
+        self.cols as u32
+    }
+
+    /// The screen's height in pixels (its rows).
+    #[must_use]
+    pub const fn height(&self) -> u32 {
+        self.rows as u32
+    }
+
+    /// Columns (pixels across): [`Camera::width`] as the render path counts them.
+    pub(crate) const fn cols(&self) -> u16 {
         self.cols
     }
 
-    /// Rows (pixels down).
-    #[must_use]
-    pub const fn rows(&self) -> u16 {
+    /// Rows (pixels down): [`Camera::height`] as the render path counts them.
+    pub(crate) const fn rows(&self) -> u16 {
         self.rows
     }
 
@@ -447,33 +538,50 @@ impl Camera {
     /// Refuses a display row outside the screen: the one check of every function that takes
     /// a row of the picture ([`render_row`](crate::render_row), [`shoot_row`](crate::shoot_row),
     /// [`Camera::row_rays`], …).
-    pub(crate) fn check_row(&self, row: u16) -> Result<(), Error> {
-        if row < self.rows {
-            Ok(())
-        } else {
-            Err(Error::RowOutOfRange {
-                row,
+    ///
+    /// A row of the screen comes back as the render path counts rows.
+    pub(crate) fn check_row(&self, y: u32) -> Result<u16, Error> {
+        match u16::try_from(y) {
+            Ok(row) if row < self.rows => Ok(row),
+            _ => Err(Error::RowOutOfRange {
+                row: u16::try_from(y).unwrap_or(u16::MAX),
                 rows: self.rows,
-            })
+            }),
         }
     }
 
-    /// From the eye towards the centre of pixel (`row`, `col`), in pixel units, unnormalised.
-    fn towards(&self, row: u16, col: u16) -> Vec3 {
-        self.towards_sample(row, col, 0, 0, 1)
+    /// Refuses a pixel outside the screen: a column past the right edge
+    /// ([`Error::ColumnOutOfRange`]) or a row past the bottom ([`Error::RowOutOfRange`]).
+    pub(crate) fn check_pixel(&self, x: u32, y: u32) -> Result<(), Error> {
+        match u16::try_from(x) {
+            Ok(col) if col < self.cols => {}
+            _ => {
+                return Err(Error::ColumnOutOfRange {
+                    col: u16::try_from(x).unwrap_or(u16::MAX),
+                    cols: self.cols,
+                });
+            }
+        }
+        self.check_row(y).map(|_| ())
+    }
+
+    /// From the eye towards the centre of pixel (`x`, `y`), in pixel units, unnormalised.
+    fn towards(&self, x: u32, y: u32) -> Vec3 {
+        self.towards_sample(x, y, 0, 0, 1)
     }
 
     /// `2n` times the direction from the eye towards sample (`sx`, `sy`) of an `n × n` grid of
-    /// sub-pixel centres in pixel (`row`, `col`), as raw Q16.16 values (exact), and `2n`.
-    fn towards_wide(&self, row: u16, col: u16, sx: u8, sy: u8, n: u8) -> ([i64; 3], i64) {
+    /// sub-pixel centres in pixel (`x`, `y`), as raw Q16.16 values (exact), and `2n`.
+    fn towards_wide(&self, x: u32, y: u32, sx: u8, sy: u8, n: u8) -> ([i64; 3], i64) {
         // Offsets from the screen centre in units of 1/(2n) pixel:
-        // 2n·(col + (2·sx + 1)/(2n)) − n·cols.
+        // 2n·(x + (2·sx + 1)/(2n)) − n·cols.
         let n = n.max(1) as i64;
         let denom = 2 * n;
-        let kx = denom * col as i64 + 2 * sx as i64 + 1 - n * self.cols as i64;
-        let ky = denom * row as i64 + 2 * sy as i64 + 1 - n * self.rows as i64;
-        // |kx|, |ky| < 2²¹ for any u16 row or column and n ≤ 16, the basis components are
-        // below 2¹⁵ (raw 2³¹, and `down` within 4 pixels), so each sum is below 2⁵³.
+        let kx = denom * x as i64 + 2 * sx as i64 + 1 - n * self.cols as i64;
+        let ky = denom * y as i64 + 2 * sy as i64 + 1 - n * self.rows as i64;
+        // |kx|, |ky| < 2³⁸ for any u32 column or row and n ≤ 16. `right` is a unit vector in
+        // pixel units (raw components within 2¹⁶), `down` at most 4 pixels long (raw 2¹⁸) and
+        // `forward` at most 16 384 (raw 2³⁰), so each sum is below 2⁵⁷.
         let c = |f: Fx, r: Fx, d: Fx| {
             f.to_bits() as i64 * denom + r.to_bits() as i64 * kx + d.to_bits() as i64 * ky
         };
@@ -488,15 +596,15 @@ impl Camera {
     }
 
     /// From the eye towards sample (`sx`, `sy`) of an `n × n` grid of sub-pixel centres in
-    /// pixel (`row`, `col`), in pixel units, unnormalised. `n = 1` is the pixel centre.
+    /// pixel (`x`, `y`), in pixel units, unnormalised. `n = 1` is the pixel centre.
     ///
     /// On the screen it is the exact direction rounded (half up) to Q16.16: the ray budget
     /// keeps it within 16 384 pixels. Off the screen it may be longer than Q16.16 holds, and
     /// is then scaled down by a power of two until it is at most 16 384 pixels long per
     /// component, and rounded: the same direction, to about 2⁻³⁰.
-    fn towards_sample(&self, row: u16, col: u16, sx: u8, sy: u8, n: u8) -> Vec3 {
-        let (wide, denom) = self.towards_wide(row, col, sx, sy, n);
-        let shift = if row < self.rows && col < self.cols {
+    fn towards_sample(&self, x: u32, y: u32, sx: u8, sy: u8, n: u8) -> Vec3 {
+        let (wide, denom) = self.towards_wide(x, y, sx, sy, n);
+        let shift = if x < u32::from(self.cols) && y < u32::from(self.rows) {
             0
         } else {
             Camera::shift_to_fit(&wide, denom)
@@ -513,7 +621,7 @@ impl Camera {
     }
 
     /// The smallest `k` for which `2n`-fold components `wide` divided by `2n·2^k` are at most
-    /// 2³⁰ in raw magnitude (16 384 pixels); at most 23, as they are below 2⁵³.
+    /// 2³⁰ in raw magnitude (16 384 pixels); at most 26, as they are below 2⁵⁷.
     #[cold]
     fn shift_to_fit(wide: &[i64; 3], denom: i64) -> u32 {
         let largest = wide.iter().map(|w| w.unsigned_abs()).max().unwrap_or(0);
@@ -525,19 +633,19 @@ impl Camera {
         shift
     }
 
-    /// The centre of pixel (`row`, `col`) on the view screen, in world units (display
-    /// indexing: row 0 at the top), rounded once to Q16.16.
+    /// The centre of pixel (`x`, `y`) on the view screen, in world units (column `x` from
+    /// the left, row `y` from the top), rounded once to Q16.16.
     ///
     /// It lies on the pixel's ray ([`Camera::ray`]): the camera's own direction towards the
     /// pixel, in pixel units, scaled by the screen's distance over the view distance. Both
     /// are as rounded to Q16.16, so the point carries the view distance's rounding, a
-    /// relative 2⁻¹⁷/F for a view distance of F pixels. Rows and columns outside the screen
-    /// continue its plane; a coordinate beyond the Q16.16 range saturates (at −32 768 or just
-    /// below 32 768), the others are unaffected.
+    /// relative 2⁻¹⁷/F for a view distance of F pixels. Columns and rows outside the screen
+    /// (every `u32` is allowed) continue its plane; a coordinate beyond the Q16.16 range
+    /// saturates (at −32 768 or just below 32 768), the others are unaffected.
     #[must_use]
-    pub fn pixel_centre(&self, row: u16, col: u16) -> Vec3 {
-        let (wide, denom) = self.towards_wide(row, col, 0, 0, 1);
-        // World = pixels · screen / view. Below 2⁵³ · 2³¹: the product fits i128, and the
+    pub fn pixel_centre(&self, x: u32, y: u32) -> Vec3 {
+        let (wide, denom) = self.towards_wide(x, y, 0, 0, 1);
+        // World = pixels · screen / view. Below 2⁵⁷ · 2³¹: the product fits i128, and the
         // divisor is positive (the view distance is at least one Q16.16 step).
         let divisor = denom as i128 * self.view.to_bits() as i128;
         let c = |w: i64| {
@@ -548,24 +656,25 @@ impl Camera {
         self.eye + Vec3::new(c(wide[0]), c(wide[1]), c(wide[2]))
     }
 
-    /// The ray from the viewpoint through the centre of pixel (`row`, `col`):
-    /// `u_r = p / ‖p‖`.
+    /// The ray from the viewpoint through the centre of pixel (`x`, `y`), column `x` from
+    /// the left and row `y` from the top: `u_r = p / ‖p‖`.
     ///
-    /// Every `u16` row and column is allowed: those outside the screen continue its plane
-    /// (their directions are exact to about 2⁻³⁰ before normalising, like the screen's own).
+    /// Every `u32` column and row is allowed: those outside the screen (right of it or below
+    /// it) continue its plane without wrapping (their directions are exact to about 2⁻³⁰
+    /// before normalising, like the screen's own).
     #[must_use]
-    pub fn ray(&self, row: u16, col: u16) -> Ray {
+    pub fn ray(&self, x: u32, y: u32) -> Ray {
         // The ray budget keeps the screen at least a Q16.16 step in front of the eye, and
         // pixel centres off the screen are farther from the eye, so p is never zero.
-        let dir = self.towards(row, col).normalize_or_zero();
+        let dir = self.towards(x, y).normalize_or_zero();
         Ray::new_unchecked(self.eye, dir)
     }
 
-    /// The rays of display row `row`, left to right: [`Camera::ray`] for each column, found
-    /// for less (see [`RowRays`]). A row outside the screen is [`Error::RowOutOfRange`]
-    /// (its rays are [`Camera::ray`]'s).
-    pub fn row_rays(&self, row: u16) -> Result<RowRays<'_>, Error> {
-        self.check_row(row)?;
+    /// The rays of display row `y` (0 at the top), left to right: [`Camera::ray`] for each
+    /// column, found for less (see [`RowRays`]). A row outside the screen is
+    /// [`Error::RowOutOfRange`] (its rays are [`Camera::ray`]'s).
+    pub fn row_rays(&self, y: u32) -> Result<RowRays<'_>, Error> {
+        let row = self.check_row(y)?;
         Ok(RowRays::new(self, row))
     }
 
@@ -575,7 +684,7 @@ impl Camera {
     /// rounding. A row's rays then cost three additions each, before normalising. For a row
     /// of the screen only ([`Camera::check_row`]).
     pub(crate) fn row_start(&self, row: u16) -> Vec3 {
-        self.towards(row, 0)
+        self.towards(0, row.into())
     }
 
     /// One column to the right, in the units of [`Camera::row_start`].
@@ -594,7 +703,9 @@ impl Camera {
     /// `row` (the rays of a row differ only along `right`), or `None` if it is degenerate.
     /// Any `u16` row: off the screen, its direction towards column 0 is scaled to fit.
     pub(crate) fn row_plane_normal(&self, row: u16) -> Option<Vec3> {
-        self.right.cross(self.towards(row, 0)).try_normalize()
+        self.right
+            .cross(self.towards(0, row.into()))
+            .try_normalize()
     }
 
     /// The columns whose rays can meet a sphere of `radius` at `centre`, as a conservative
@@ -630,15 +741,141 @@ impl Camera {
     }
 
     /// The ray through sample (`sx`, `sy`) of an `n × n` grid of sub-pixel centres in pixel
-    /// (`row`, `col`), for supersampling: sample `(s, t)` sits at
-    /// `(col + (2s + 1)/(2n), row + (2t + 1)/(2n))`. `n` is clamped to 1..=16; `n = 1` is
-    /// [`Camera::ray`]. Like it, every `u16` row and column is allowed.
+    /// (`x`, `y`), for supersampling: sample `(s, t)` sits at
+    /// `(x + (2s + 1)/(2n), y + (2t + 1)/(2n))`. `n` is clamped to 1..=16; `n = 1` is
+    /// [`Camera::ray`]. Like it, every `u32` column and row is allowed.
     #[must_use]
-    pub fn sample_ray(&self, row: u16, col: u16, sx: u8, sy: u8, n: u8) -> Ray {
+    pub fn sample_ray(&self, x: u32, y: u32, sx: u8, sy: u8, n: u8) -> Ray {
         let dir = self
-            .towards_sample(row, col, sx, sy, n.clamp(1, 16))
+            .towards_sample(x, y, sx, sy, n.clamp(1, 16))
             .normalize_or_zero();
         Ray::new_unchecked(self.eye, dir)
+    }
+}
+
+/// The vertical field of view of [`Camera::look_at`] and [`Camera::orbit`] unless set.
+const DEFAULT_FOV_DEGREES: f32 = 60.0;
+
+/// A pinhole camera being set up: [`Camera::pinhole`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[must_use = "a camera builder does nothing until `build` is called"]
+pub struct Pinhole {
+    screen_w: f32,
+    screen_h: f32,
+    distance: f32,
+    size: Size,
+}
+
+impl Pinhole {
+    /// The screen's size in pixels, width by height: 1 to 4096 a side.
+    pub const fn size(mut self, size: Size) -> Self {
+        self.size = size;
+        self
+    }
+
+    /// The camera, or why it cannot be made: a size with no pixels (the size was never set)
+    /// or wider or taller than 4096 is [`Error::DegenerateCamera`]; see [`Camera::pinhole`]
+    /// for the rest.
+    pub fn build(self) -> Result<Camera, Error> {
+        let (cols, rows) = check_size(self.size)?;
+        Camera::pinhole_checked(self.screen_w, self.screen_h, self.distance, cols, rows)
+    }
+}
+
+/// A look-at camera being set up: [`Camera::look_at`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[must_use = "a camera builder does nothing until `build` is called"]
+pub struct LookAt {
+    eye: [f32; 3],
+    target: [f32; 3],
+    up: [f32; 3],
+    fov_degrees: f32,
+    size: Size,
+}
+
+impl LookAt {
+    /// The upward direction of the picture (any length but zero, not along the view): +y
+    /// unless set.
+    pub const fn up(mut self, up: [f32; 3]) -> Self {
+        self.up = up;
+        self
+    }
+
+    /// The vertical field of view in degrees, strictly between 0 and 180 and within the
+    /// limits of [`Camera`] for the size: 60 unless set.
+    pub const fn fov_degrees(mut self, degrees: f32) -> Self {
+        self.fov_degrees = degrees;
+        self
+    }
+
+    /// The screen's size in pixels, width by height: 1 to 4096 a side.
+    pub const fn size(mut self, size: Size) -> Self {
+        self.size = size;
+        self
+    }
+
+    /// The camera, or why it cannot be made: a size with no pixels (the size was never set)
+    /// or wider or taller than 4096 is [`Error::DegenerateCamera`]; see [`Camera::look_at`]
+    /// for the rest.
+    pub fn build(self) -> Result<Camera, Error> {
+        let (cols, rows) = check_size(self.size)?;
+        Camera::look_at_checked(self.eye, self.target, self.up, self.fov_degrees, cols, rows)
+    }
+}
+
+/// An orbiting camera being set up: [`Camera::orbit`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[must_use = "a camera builder does nothing until `build` is called"]
+pub struct Orbit {
+    target: [f32; 3],
+    distance: f32,
+    yaw_degrees: f32,
+    pitch_degrees: f32,
+    fov_degrees: f32,
+    size: Size,
+}
+
+impl Orbit {
+    /// The turn about the vertical (+y) axis through the target, in degrees: 0 (unless set)
+    /// puts the eye on the target's +z side, 90 on its +x side.
+    pub const fn yaw_degrees(mut self, degrees: f32) -> Self {
+        self.yaw_degrees = degrees;
+        self
+    }
+
+    /// The height above the target's horizon, in degrees, strictly between −90 and 90: 0
+    /// unless set.
+    pub const fn pitch_degrees(mut self, degrees: f32) -> Self {
+        self.pitch_degrees = degrees;
+        self
+    }
+
+    /// The vertical field of view in degrees, as [`LookAt::fov_degrees`]: 60 unless set.
+    pub const fn fov_degrees(mut self, degrees: f32) -> Self {
+        self.fov_degrees = degrees;
+        self
+    }
+
+    /// The screen's size in pixels, width by height: 1 to 4096 a side.
+    pub const fn size(mut self, size: Size) -> Self {
+        self.size = size;
+        self
+    }
+
+    /// The camera, or why it cannot be made: a size with no pixels (the size was never set)
+    /// or wider or taller than 4096 is [`Error::DegenerateCamera`]; see [`Camera::orbit`]
+    /// and [`Camera::look_at`] for the rest.
+    pub fn build(self) -> Result<Camera, Error> {
+        let (cols, rows) = check_size(self.size)?;
+        Camera::orbit_checked(
+            self.target,
+            self.distance,
+            self.yaw_degrees,
+            self.pitch_degrees,
+            self.fov_degrees,
+            cols,
+            rows,
+        )
     }
 }
 
@@ -650,16 +887,19 @@ mod tests {
     #[test]
     fn chapter_screen_pixel_centres() {
         // w = 5, h = 3, z_p = 1 over M = 3 rows and N = 5 columns: one unit per pixel.
-        let cam = Camera::pinhole(5.0, 3.0, 1.0, 3, 5).unwrap();
-        for i in 0..3u16 {
-            for j in 0..5u16 {
+        let cam = Camera::pinhole(5.0, 3.0, 1.0)
+            .size(Size::new(5, 3))
+            .build()
+            .unwrap();
+        for i in 0..3u32 {
+            for j in 0..5u32 {
                 let expect = Vec3::from_f32(
                     [-2.5 + (j as f32 + 0.5), -1.5 + (i as f32 + 0.5), -1.0],
                     Quantity::PlanePoint,
                 )
                 .unwrap();
                 assert_eq!(
-                    cam.pixel_centre(2 - i, j),
+                    cam.pixel_centre(j, 2 - i),
                     expect,
                     "chapter pixel ({i}, {j})"
                 );
@@ -669,51 +909,63 @@ mod tests {
 
     #[test]
     fn picture_is_upright_and_unmirrored() {
-        let cam = Camera::pinhole(2.0, 2.0, 1.0, 10, 10).unwrap();
-        assert!(cam.ray(0, 5).dir.y > Fx::ZERO, "row 0 looks up");
-        assert!(cam.ray(9, 5).dir.y < Fx::ZERO, "last row looks down");
-        assert!(cam.ray(5, 0).dir.x < Fx::ZERO, "column 0 looks left");
-        let general =
-            Camera::look_at([0.0; 3], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0], 90.0, 10, 10).unwrap();
-        assert!(general.ray(0, 5).dir.y > Fx::ZERO);
-        assert!(general.ray(5, 0).dir.x < Fx::ZERO);
+        let cam = Camera::pinhole(2.0, 2.0, 1.0)
+            .size(Size::new(10, 10))
+            .build()
+            .unwrap();
+        assert!(cam.ray(5, 0).dir.y > Fx::ZERO, "row 0 looks up");
+        assert!(cam.ray(5, 9).dir.y < Fx::ZERO, "last row looks down");
+        assert!(cam.ray(0, 5).dir.x < Fx::ZERO, "column 0 looks left");
+        let general = Camera::look_at([0.0; 3], [0.0, 0.0, -1.0])
+            .fov_degrees(90.0)
+            .size(Size::new(10, 10))
+            .build()
+            .unwrap();
+        assert!(general.ray(5, 0).dir.y > Fx::ZERO);
+        assert!(general.ray(0, 5).dir.x < Fx::ZERO);
     }
 
     #[test]
     fn stepping_along_a_row_gives_every_pixel_its_own_ray() {
         let cameras = [
-            Camera::pinhole(3.7, 2.1, 1.3, 37, 53).unwrap(),
-            Camera::look_at(
-                [1.0, 2.0, 3.0],
-                [-4.0, 0.5, -9.0],
-                [0.1, 1.0, 0.2],
-                47.0,
-                61,
-                29,
-            )
-            .unwrap(),
-            Camera::orbit([0.0, 0.0, -16.0], 20.0, 33.0, 21.0, 75.0, 40, 64).unwrap(),
+            Camera::pinhole(3.7, 2.1, 1.3)
+                .size(Size::new(53, 37))
+                .build()
+                .unwrap(),
+            Camera::look_at([1.0, 2.0, 3.0], [-4.0, 0.5, -9.0])
+                .up([0.1, 1.0, 0.2])
+                .fov_degrees(47.0)
+                .size(Size::new(61, 29))
+                .build()
+                .unwrap(),
+            Camera::orbit([0.0, 0.0, -16.0], 20.0)
+                .yaw_degrees(33.0)
+                .pitch_degrees(21.0)
+                .fov_degrees(75.0)
+                .size(Size::new(40, 64))
+                .build()
+                .unwrap(),
         ];
         for camera in cameras {
-            for row in 0..camera.rows() {
-                let mut towards = camera.row_start(row);
+            for y in 0..camera.height() {
+                let mut towards = camera.row_start(y as u16);
                 let mut square = RowSquares::new(towards, camera.column_step());
-                for col in 0..camera.cols() {
-                    assert_eq!(towards, camera.towards(row, col), "({row}, {col})");
+                for x in 0..camera.width() {
+                    assert_eq!(towards, camera.towards(x, y), "({x}, {y})");
                     assert_eq!(square.carried(), towards.length_squared_wide());
                     assert_eq!(square.now(towards), towards.length_squared_wide());
                     let ray = camera.ray_along(towards, square.carried());
-                    assert_eq!(ray, camera.ray(row, col));
+                    assert_eq!(ray, camera.ray(x, y));
                     towards = towards + camera.column_step();
                     square.step();
                 }
                 // Skipping ahead lands on the same rays.
-                for skip in [0u16, 3, 9, 100] {
-                    let mut rays = camera.row_rays(row).unwrap();
+                for skip in [0u32, 3, 9, 100] {
+                    let mut rays = camera.row_rays(y).unwrap();
                     rays.nth(4);
-                    let col = 5 + skip; // past the five rays already taken
-                    let expected = (col < camera.cols()).then(|| camera.ray(row, col));
-                    assert_eq!(rays.nth(skip as usize), expected, "({row}, {col})");
+                    let x = 5 + skip; // past the five rays already taken
+                    let expected = (x < camera.width()).then(|| camera.ray(x, y));
+                    assert_eq!(rays.nth(skip as usize), expected, "({x}, {y})");
                 }
             }
         }
@@ -722,10 +974,18 @@ mod tests {
     #[test]
     fn look_at_down_minus_z_matches_the_pinhole() {
         // A 90° field of view at distance 1 is a 2 × 2 screen.
-        let a = Camera::look_at([0.0; 3], [0.0, 0.0, -5.0], [0.0, 3.0, 0.0], 90.0, 8, 8).unwrap();
-        let b = Camera::pinhole(2.0, 2.0, 1.0, 8, 8).unwrap();
+        let a = Camera::look_at([0.0; 3], [0.0, 0.0, -5.0])
+            .up([0.0, 3.0, 0.0])
+            .fov_degrees(90.0)
+            .size(Size::new(8, 8))
+            .build()
+            .unwrap();
+        let b = Camera::pinhole(2.0, 2.0, 1.0)
+            .size(Size::new(8, 8))
+            .build()
+            .unwrap();
         for (row, col) in [(0, 0), (3, 4), (7, 7)] {
-            let (da, db) = (a.ray(row, col).dir, b.ray(row, col).dir);
+            let (da, db) = (a.ray(col, row).dir, b.ray(col, row).dir);
             for (p, q) in [(da.x, db.x), (da.y, db.y), (da.z, db.z)] {
                 assert!((p - q).abs() <= Fx::from_bits(4), "{da:?} vs {db:?}");
             }
@@ -739,30 +999,48 @@ mod tests {
         // rounded as it is, never scaled. Tried at the budget's edges.
         let (o, ahead, up) = ([0.0; 3], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]);
         let cameras = [
-            Camera::look_at(o, ahead, up, 0.841, 320, 240).unwrap(),
-            Camera::look_at(o, ahead, up, 14.722, 4096, 4096).unwrap(),
-            Camera::look_at(o, ahead, up, 151.028, 4096, 4096).unwrap(),
-            Camera::look_at(
-                [1.0, 2.0, 3.0],
-                [-4.0, 0.5, -9.0],
-                [0.1, 1.0, 0.2],
-                15.0,
-                4096,
-                4096,
-            )
-            .unwrap(),
-            Camera::pinhole(1.0, 8.0, 4.0, 2048, 1024).unwrap(),
-            Camera::pinhole(8.0, 1.0, 16.0, 1024, 2048).unwrap(),
+            Camera::look_at(o, ahead)
+                .up(up)
+                .fov_degrees(0.841)
+                .size(Size::new(320, 240))
+                .build()
+                .unwrap(),
+            Camera::look_at(o, ahead)
+                .up(up)
+                .fov_degrees(14.722)
+                .size(Size::new(4096, 4096))
+                .build()
+                .unwrap(),
+            Camera::look_at(o, ahead)
+                .up(up)
+                .fov_degrees(151.028)
+                .size(Size::new(4096, 4096))
+                .build()
+                .unwrap(),
+            Camera::look_at([1.0, 2.0, 3.0], [-4.0, 0.5, -9.0])
+                .up([0.1, 1.0, 0.2])
+                .fov_degrees(15.0)
+                .size(Size::new(4096, 4096))
+                .build()
+                .unwrap(),
+            Camera::pinhole(1.0, 8.0, 4.0)
+                .size(Size::new(1024, 2048))
+                .build()
+                .unwrap(),
+            Camera::pinhole(8.0, 1.0, 16.0)
+                .size(Size::new(2048, 1024))
+                .build()
+                .unwrap(),
         ];
         for camera in cameras {
-            let (rows, cols) = (camera.rows(), camera.cols());
-            for (row, col) in [(0, 0), (0, cols - 1), (rows - 1, 0), (rows - 1, cols - 1)] {
+            let (w, h) = (camera.width(), camera.height());
+            for (x, y) in [(0, 0), (w - 1, 0), (0, h - 1), (w - 1, h - 1)] {
                 for (s, t, n) in [(0, 0, 1), (0, 0, 16), (15, 15, 16), (0, 15, 16)] {
-                    let (wide, denom) = camera.towards_wide(row, col, s, t, n);
+                    let (wide, denom) = camera.towards_wide(x, y, s, t, n);
                     assert_eq!(
                         Camera::shift_to_fit(&wide, denom),
                         0,
-                        "{camera:?} ({row}, {col})"
+                        "{camera:?} ({x}, {y})"
                     );
                 }
             }
@@ -871,25 +1149,21 @@ mod tests {
         // The shift-then-divide rounding of `towards_sample` against one plain division by
         // 2n·2^shift, on and off the screen, for every grid size.
         let cameras = [
-            Camera::pinhole(3.7, 2.1, 1.3, 37, 53).unwrap(),
-            Camera::look_at(
-                [1.0, 2.0, 3.0],
-                [-4.0, 0.5, -9.0],
-                [0.1, 1.0, 0.2],
-                47.0,
-                61,
-                29,
-            )
-            .unwrap(),
-            Camera::look_at(
-                [0.0; 3],
-                [0.0, 0.0, -1.0],
-                [0.0, 1.0, 0.0],
-                150.0,
-                4096,
-                4096,
-            )
-            .unwrap(),
+            Camera::pinhole(3.7, 2.1, 1.3)
+                .size(Size::new(53, 37))
+                .build()
+                .unwrap(),
+            Camera::look_at([1.0, 2.0, 3.0], [-4.0, 0.5, -9.0])
+                .up([0.1, 1.0, 0.2])
+                .fov_degrees(47.0)
+                .size(Size::new(61, 29))
+                .build()
+                .unwrap(),
+            Camera::look_at([0.0; 3], [0.0, 0.0, -1.0])
+                .fov_degrees(150.0)
+                .size(Size::new(4096, 4096))
+                .build()
+                .unwrap(),
         ];
         let mut random = crate::xorshift::XorShift(0x70_3a2d);
         let mut scaled = 0;
@@ -898,14 +1172,19 @@ mod tests {
                 let r = random.next();
                 let n = (r % 16) as u8 + 1;
                 let (sx, sy) = ((r >> 4) as u8 % n, (r >> 12) as u8 % n);
-                let (row, col) = ((r >> 20) as u16, (r >> 36) as u16);
-                let (row, col) = match r >> 62 {
-                    0 => (row % camera.rows(), col % camera.cols()),
-                    1 => (row % camera.rows(), col),
-                    _ => (row, col),
+                // Any u32 column and row, up to the largest, where the sums come nearest
+                // their 2⁵⁷ bound.
+                let far = random.next();
+                let (x, y) = (far as u32, (far >> 32) as u32);
+                let (x, y) = match r >> 61 {
+                    0 | 1 => (x % camera.width(), y % camera.height()),
+                    2 => (x, y % camera.height()),
+                    3 => (x % camera.width(), y),
+                    4 => (u32::MAX, u32::MAX - (r >> 20) as u32 % 2),
+                    _ => (x, y),
                 };
-                let (wide, denom) = camera.towards_wide(row, col, sx, sy, n);
-                let shift = if row < camera.rows() && col < camera.cols() {
+                let (wide, denom) = camera.towards_wide(x, y, sx, sy, n);
+                let shift = if x < camera.width() && y < camera.height() {
                     0
                 } else {
                     Camera::shift_to_fit(&wide, denom)
@@ -914,11 +1193,11 @@ mod tests {
                 let divisor = denom << shift;
                 let want =
                     wide.map(|w| Fx::from_bits((w + divisor / 2).div_euclid(divisor) as i32));
-                let found = camera.towards_sample(row, col, sx, sy, n);
+                let found = camera.towards_sample(x, y, sx, sy, n);
                 assert_eq!(
                     found,
                     Vec3::new(want[0], want[1], want[2]),
-                    "({row}, {col}) {n}"
+                    "({x}, {y}) {n}"
                 );
             }
         }
@@ -926,54 +1205,118 @@ mod tests {
     }
 
     #[test]
+    fn rays_far_off_the_screen_continue_its_plane() {
+        // The last u32 column looks along `right` (plus at most 2⁻¹⁵ of the view), never
+        // wrapped round to the left; the last row looks down.
+        let camera = Camera::look_at([1.0, 2.0, 3.0], [-4.0, 0.5, -9.0])
+            .up([0.1, 1.0, 0.2])
+            .fov_degrees(47.0)
+            .size(Size::new(61, 29))
+            .build()
+            .unwrap();
+        let near = |a: Vec3, b: Vec3| {
+            let d = a - b;
+            d.x.abs().max(d.y.abs()).max(d.z.abs()) <= Fx::from_bits(4)
+        };
+        let right = camera.right.normalize_or_zero();
+        let down = camera.down.normalize_or_zero();
+        assert!(near(camera.ray(u32::MAX, 14).dir, right));
+        assert!(near(camera.ray(30, u32::MAX).dir, down));
+        assert!(near(camera.sample_ray(u32::MAX, 14, 15, 15, 16).dir, right));
+        // Pixel centres far off the screen saturate, on the right side.
+        let far = camera.pixel_centre(u32::MAX, 14) - camera.eye();
+        assert!(far.dot(right) > Fx::ZERO);
+    }
+
+    #[test]
+    fn sizes_are_one_to_4096_pixels_a_side() {
+        let build = |size| {
+            Camera::look_at([0.0; 3], [0.0, 0.0, -1.0])
+                .size(size)
+                .build()
+        };
+        for size in [Size::new(1, 1), Size::new(4096, 4096), Size::new(1, 4096)] {
+            assert_eq!(build(size).map(|c| c.size()), Ok(size));
+        }
+        for size in [
+            Size::zero(),
+            Size::new(0, 4),
+            Size::new(4097, 1),
+            Size::new(1, u32::MAX),
+        ] {
+            assert!(
+                matches!(build(size), Err(Error::DegenerateCamera(_))),
+                "{size:?}"
+            );
+        }
+        // A builder whose size was never set has no pixels.
+        assert!(matches!(
+            Camera::pinhole(1.0, 1.0, 1.0).build(),
+            Err(Error::DegenerateCamera(CameraProblem::NoPixels))
+        ));
+        assert!(Camera::orbit([0.0; 3], 4.0).build().is_err());
+        // (width, height) = (columns, rows).
+        let camera = build(Size::new(320, 240)).unwrap();
+        assert_eq!((camera.width(), camera.height()), (320, 240));
+        assert_eq!((camera.cols(), camera.rows()), (320, 240));
+    }
+
+    #[test]
     fn degenerate_cameras_are_refused() {
         let up = [0.0, 1.0, 0.0];
         let err = |r: Result<Camera, Error>| r.unwrap_err();
         assert!(matches!(
-            err(Camera::look_at([1.0; 3], [1.0; 3], up, 60.0, 4, 4)),
+            err(Camera::look_at([1.0; 3], [1.0; 3])
+                .up(up)
+                .size(Size::new(4, 4))
+                .build()),
             Error::DegenerateCamera(CameraProblem::TargetIsEye)
         ));
         assert!(matches!(
-            err(Camera::look_at(
-                [0.0; 3],
-                [0.0, 0.0, -1.0],
-                [0.0; 3],
-                60.0,
-                4,
-                4
-            )),
+            err(Camera::look_at([0.0; 3], [0.0, 0.0, -1.0])
+                .up([0.0; 3])
+                .size(Size::new(4, 4))
+                .build()),
             Error::DegenerateCamera(CameraProblem::UpIsZero)
         ));
         assert!(matches!(
-            err(Camera::look_at([0.0; 3], [0.0, 0.0, -1.0], up, 0.0, 4, 4)),
+            err(Camera::look_at([0.0; 3], [0.0, 0.0, -1.0])
+                .up(up)
+                .fov_degrees(0.0)
+                .size(Size::new(4, 4))
+                .build()),
             Error::DegenerateCamera(CameraProblem::FieldOfView)
         ));
         assert!(matches!(
-            err(Camera::look_at(
-                [0.0; 3],
-                [0.0, 0.0, -1.0],
-                up,
-                f32::NAN,
-                4,
-                4
-            )),
+            err(Camera::look_at([0.0; 3], [0.0, 0.0, -1.0])
+                .up(up)
+                .fov_degrees(f32::NAN)
+                .size(Size::new(4, 4))
+                .build()),
             Error::NotFinite {
                 quantity: Quantity::FieldOfView
             }
         ));
         assert!(matches!(
-            err(Camera::look_at([0.0; 3], [0.0, 0.0, -1.0], up, 60.0, 0, 4)),
+            err(Camera::look_at([0.0; 3], [0.0, 0.0, -1.0])
+                .up(up)
+                .size(Size::new(0, 4))
+                .build()),
             Error::DegenerateCamera(CameraProblem::NoPixels)
         ));
         assert!(matches!(
-            err(Camera::pinhole(-1.0, 1.0, 1.0, 4, 4)),
+            err(Camera::pinhole(-1.0, 1.0, 1.0)
+                .size(Size::new(4, 4))
+                .build()),
             Error::OutOfRange {
                 quantity: Quantity::ScreenWidth,
                 ..
             }
         ));
         assert!(matches!(
-            err(Camera::pinhole(1.0, 1.0, f32::INFINITY, 4, 4)),
+            err(Camera::pinhole(1.0, 1.0, f32::INFINITY)
+                .size(Size::new(4, 4))
+                .build()),
             Error::NotFinite {
                 quantity: Quantity::ScreenDistance
             }

@@ -13,5 +13,5 @@ pub(crate) mod rows;
 pub(crate) mod trace;
 
 pub use accel::row_rays::RowRays;
-pub use camera::{Camera, MAX_PIXELS};
+pub use camera::{Camera, LookAt, MAX_PIXELS, Orbit, Pinhole};
 pub use rows::{render, render_row, render_row_supersampled, shoot_row, shoot_row_skipping};

@@ -20,14 +20,8 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// assert!(scene.pick(&camera, 160, 0).is_err());
     /// # Ok::<(), fixray::Error>(())
     /// ```
-    pub fn pick(&self, camera: &Camera, x: u16, y: u16) -> Result<Option<Hit>, Error> {
-        if x >= camera.cols() {
-            return Err(Error::ColumnOutOfRange {
-                col: x,
-                cols: camera.cols(),
-            });
-        }
-        camera.check_row(y)?;
-        Ok(self.shoot(&camera.ray(y, x)))
+    pub fn pick(&self, camera: &Camera, x: u32, y: u32) -> Result<Option<Hit>, Error> {
+        camera.check_pixel(x, y)?;
+        Ok(self.shoot(&camera.ray(x, y)))
     }
 }

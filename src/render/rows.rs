@@ -10,11 +10,11 @@ use crate::render::camera::Camera;
 use crate::scene::Scene;
 use crate::scene::colour::Rgb;
 
-/// Renders display row `row` (0 at the top) into `out`, one colour per column.
+/// Renders display row `y` (0 at the top) into `out`, one colour per column.
 ///
 /// This is the streaming form: RAM for one row, so a chip that cannot hold a frame can send
-/// each row to its display as it is finished. `row` must be below `camera.rows()`
-/// ([`Error::RowOutOfRange`]) and `out` must hold exactly `camera.cols()` pixels
+/// each row to its display as it is finished. `y` must be below `camera.height()`
+/// ([`Error::RowOutOfRange`]) and `out` must hold exactly `camera.width()` pixels
 /// ([`Error::BufferLength`]).
 ///
 /// ```
@@ -34,10 +34,10 @@ use crate::scene::colour::Rgb;
 pub fn render_row<const N: usize, const L: usize>(
     scene: &Scene<N, L>,
     camera: &Camera,
-    row: u16,
+    y: u32,
     out: &mut [Rgb],
 ) -> Result<(), Error> {
-    check_row(camera, row, out)?;
+    let row = check_row(camera, y, out)?;
     // Where nothing can be hit a plain sky needs no rays: `shade` would give its colour.
     let sky = scene.background().plain_colour();
     cast_row(
@@ -61,8 +61,8 @@ pub fn render_row<const N: usize, const L: usize>(
     Ok(())
 }
 
-/// Shoots the ray of every pixel of display row `row` into the scene, nearest hit first, and
-/// hands each to `each(col, ray, hit)` in column order: `render_row` without the shading.
+/// Shoots the ray of every pixel of display row `y` into the scene, nearest hit first, and
+/// hands each to `each(x, ray, hit)` in column order: `render_row` without the shading.
 ///
 /// A row of rays lies in one plane through the eye, and each sphere covers a span of columns,
 /// so the row is first culled: only the spheres whose span holds a pixel are tried for it
@@ -74,8 +74,8 @@ pub fn render_row<const N: usize, const L: usize>(
 /// use fixray::{demo, shoot_row, Error};
 /// let (scene, camera) = (demo::scene(), demo::camera(40, 32).unwrap());
 /// let mut hits = 0;
-/// shoot_row(&scene, &camera, 31, |col, ray, hit| {
-///     assert_eq!(hit, scene.shoot(ray), "column {col}");
+/// shoot_row(&scene, &camera, 31, |x, ray, hit| {
+///     assert_eq!(hit, scene.shoot(ray), "column {x}");
 ///     hits += hit.is_some() as u32;
 /// })?;
 /// assert_eq!(hits, 40); // the bottom row sees the ground everywhere
@@ -88,13 +88,13 @@ pub fn render_row<const N: usize, const L: usize>(
 pub fn shoot_row<const N: usize, const L: usize>(
     scene: &Scene<N, L>,
     camera: &Camera,
-    row: u16,
-    mut each: impl FnMut(u16, &Ray, Option<Hit>),
+    y: u32,
+    mut each: impl FnMut(u32, &Ray, Option<Hit>),
 ) -> Result<(), Error> {
-    camera.check_row(row)?;
+    let row = camera.check_row(y)?;
     cast_row(scene, camera, row, false, |col, _, cast| {
         if let Some((ray, hit)) = cast {
-            each(col, ray, hit);
+            each(col.into(), ray, hit);
         }
     });
     Ok(())
@@ -102,7 +102,7 @@ pub fn shoot_row<const N: usize, const L: usize>(
 
 /// [`shoot_row`] for a renderer whose background needs no ray (a plain colour): the columns
 /// where the row can meet nothing come as whole runs, `empty(first..end)`, without rays made
-/// for them; every other column as `each(col, ray, hit)`, in column order. This is what
+/// for them; every other column as `each(x, ray, hit)`, in column order. This is what
 /// [`render_row`] does over a plain sky, for a shading of one's own. A row outside the
 /// screen is [`Error::RowOutOfRange`], and nothing is handed over.
 ///
@@ -117,14 +117,14 @@ pub fn shoot_row<const N: usize, const L: usize>(
 pub fn shoot_row_skipping<const N: usize, const L: usize>(
     scene: &Scene<N, L>,
     camera: &Camera,
-    row: u16,
-    mut empty: impl FnMut(core::ops::Range<u16>),
-    mut each: impl FnMut(u16, &Ray, Option<Hit>),
+    y: u32,
+    mut empty: impl FnMut(core::ops::Range<u32>),
+    mut each: impl FnMut(u32, &Ray, Option<Hit>),
 ) -> Result<(), Error> {
-    camera.check_row(row)?;
+    let row = camera.check_row(y)?;
     cast_row(scene, camera, row, true, |first, end, cast| match cast {
-        Some((ray, hit)) => each(first, ray, hit),
-        None => empty(first..end),
+        Some((ray, hit)) => each(first.into(), ray, hit),
+        None => empty(first.into()..end.into()),
     });
     Ok(())
 }
@@ -180,18 +180,18 @@ fn cast_row<const N: usize, const L: usize>(
 pub fn render_row_supersampled<const N: usize, const L: usize>(
     scene: &Scene<N, L>,
     camera: &Camera,
-    row: u16,
+    y: u32,
     n: u8,
     out: &mut [Rgb],
 ) -> Result<(), Error> {
-    check_row(camera, row, out)?;
+    check_row(camera, y, out)?;
     let n = n.clamp(1, 16);
     let count = n as u32 * n as u32;
-    for (col, pixel) in out.iter_mut().enumerate() {
+    for (x, pixel) in (0..).zip(out.iter_mut()) {
         let mut sum = [0u32; 3];
         for sy in 0..n {
             for sx in 0..n {
-                let c = scene.trace(&camera.sample_ray(row, col as u16, sx, sy, n));
+                let c = scene.trace(&camera.sample_ray(x, y, sx, sy, n));
                 sum[0] += c.r as u32;
                 sum[1] += c.g as u32;
                 sum[2] += c.b as u32;
@@ -204,9 +204,10 @@ pub fn render_row_supersampled<const N: usize, const L: usize>(
 }
 
 /// Refuses a row outside the screen ([`Error::RowOutOfRange`]), then a row buffer that is
-/// not exactly one row long ([`Error::BufferLength`]).
-fn check_row(camera: &Camera, row: u16, out: &[Rgb]) -> Result<(), Error> {
-    camera.check_row(row)?;
+/// not exactly one row long ([`Error::BufferLength`]). The row comes back as the render path
+/// counts rows.
+fn check_row(camera: &Camera, y: u32, out: &[Rgb]) -> Result<u16, Error> {
+    let row = camera.check_row(y)?;
     let needed = usize::from(camera.cols());
     if out.len() != needed {
         return Err(Error::BufferLength {
@@ -214,7 +215,7 @@ fn check_row(camera: &Camera, row: u16, out: &[Rgb]) -> Result<(), Error> {
             got: out.len(),
         });
     }
-    Ok(())
+    Ok(row)
 }
 
 /// Renders the whole frame into `frame`, whose size must equal the camera's.
@@ -240,8 +241,8 @@ pub fn render<const N: usize, const L: usize, const W: usize, const H: usize>(
             ),
         });
     }
-    for (row, pixels) in frame.rows_mut().iter_mut().enumerate() {
-        render_row(scene, camera, row as u16, pixels)?;
+    for (y, pixels) in (0..).zip(frame.rows_mut().iter_mut()) {
+        render_row(scene, camera, y, pixels)?;
     }
     Ok(())
 }

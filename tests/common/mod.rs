@@ -436,16 +436,16 @@ pub enum CameraSpec {
         w: f32,
         h: f32,
         z_p: f32,
-        rows: u16,
-        cols: u16,
+        rows: u32,
+        cols: u32,
     },
     LookAt {
         eye: [f32; 3],
         target: [f32; 3],
         up: [f32; 3],
         fov: f32,
-        cols: u16,
-        rows: u16,
+        cols: u32,
+        rows: u32,
     },
     Orbit {
         target: [f32; 3],
@@ -453,22 +453,20 @@ pub enum CameraSpec {
         yaw: f32,
         pitch: f32,
         fov: f32,
-        cols: u16,
-        rows: u16,
+        cols: u32,
+        rows: u32,
     },
 }
 
 /// A screen size: mostly small, sometimes a single pixel, the largest allowed, or too large.
-fn screen(src: &mut impl Source, hostility: u64) -> (u16, u16) {
+fn screen(src: &mut impl Source, hostility: u64) -> (u32, u32) {
+    const SIDES: [u32; 8] = [0, 1, 2, 4096, 4097, 65_536, 1 << 31, u32::MAX];
     if src.one_in(4) {
         (12, 9) // the framebuffer size the checks render into
     } else if src.one_in(hostility) {
-        (
-            src.pick(&[0, 1, 2, 4096, 4097, u16::MAX]),
-            src.pick(&[0, 1, 2, 4096, 4097, u16::MAX]),
-        )
+        (src.pick(&SIDES), src.pick(&SIDES))
     } else {
-        (1 + src.below(40) as u16, 1 + src.below(30) as u16)
+        (1 + src.below(40) as u32, 1 + src.below(30) as u32)
     }
 }
 
@@ -579,7 +577,9 @@ impl CameraSpec {
                 z_p,
                 rows,
                 cols,
-            } => Camera::pinhole(w, h, z_p, rows, cols),
+            } => Camera::pinhole(w, h, z_p)
+                .size(Size::new(cols, rows))
+                .build(),
             CameraSpec::LookAt {
                 eye,
                 target,
@@ -587,7 +587,11 @@ impl CameraSpec {
                 fov,
                 cols,
                 rows,
-            } => Camera::look_at(eye, target, up, fov, cols, rows),
+            } => Camera::look_at(eye, target)
+                .up(up)
+                .fov_degrees(fov)
+                .size(Size::new(cols, rows))
+                .build(),
             CameraSpec::Orbit {
                 target,
                 distance,
@@ -596,13 +600,18 @@ impl CameraSpec {
                 fov,
                 cols,
                 rows,
-            } => Camera::orbit(target, distance, yaw, pitch, fov, cols, rows),
+            } => Camera::orbit(target, distance)
+                .yaw_degrees(yaw)
+                .pitch_degrees(pitch)
+                .fov_degrees(fov)
+                .size(Size::new(cols, rows))
+                .build(),
         }
     }
 
     /// Why fixray must refuse this camera, by the documented rules, if it must.
     pub fn must_refuse(&self) -> Option<&'static str> {
-        let screen = |cols: u16, rows: u16| {
+        let screen = |cols: u32, rows: u32| {
             (cols == 0 || rows == 0 || cols > 4096 || rows > 4096).then_some("screen size")
         };
         let fov_bad = |fov: f32| !(fov.is_finite() && fov > 0.0 && fov < 180.0);
@@ -671,12 +680,12 @@ impl CameraSpec {
     }
 
     /// The chapter's exact camera in `f64` for the rounded inputs fixray accepted: the
-    /// direction of the ray through pixel (`row`, `col`) continuing the screen plane past its
+    /// direction of the ray through pixel (`x`, `y`) continuing the screen plane past its
     /// edges, the view distance in pixels, and the sine of the angle between the view and up
     /// (1 for the pinhole, whose basis is exact).
-    pub fn exact_ray(&self, camera: &Camera, row: f64, col: f64) -> ([f64; 3], f64, f64) {
-        let (cols, rows) = (camera.cols() as f64, camera.rows() as f64);
-        let (x, y) = (col + 0.5 - cols / 2.0, row + 0.5 - rows / 2.0);
+    pub fn exact_ray(&self, camera: &Camera, x: f64, y: f64) -> ([f64; 3], f64, f64) {
+        let (cols, rows) = (camera.width() as f64, camera.height() as f64);
+        let (x, y) = (x + 0.5 - cols / 2.0, y + 0.5 - rows / 2.0);
         match *self {
             CameraSpec::Pinhole { w, h, z_p, .. } => {
                 let (pw, ph) = (w as f64 / cols, h as f64 / rows);
@@ -767,15 +776,15 @@ pub fn check_camera_spec(spec: &CameraSpec, past_edges: bool) -> Option<Camera> 
         return None;
     }
     let camera = built.ok()?;
-    let (cols, rows) = (camera.cols(), camera.rows());
+    let (cols, rows) = (camera.width(), camera.height());
     check_rays(
         spec,
         &camera,
         &[
             (0, 0),
-            (rows - 1, cols - 1),
-            (rows / 2, cols / 2),
-            (0, cols - 1),
+            (cols - 1, rows - 1),
+            (cols / 2, rows / 2),
+            (cols - 1, 0),
         ],
     );
     if past_edges {
@@ -784,29 +793,29 @@ pub fn check_camera_spec(spec: &CameraSpec, past_edges: bool) -> Option<Camera> 
     Some(camera)
 }
 
-/// [ASSERT: rays past the screen continue it] The docs promise that rows and columns outside
-/// the screen continue the screen plane: the rays there are checked like those on it, and
-/// `row_rays` of rows past the screen against `ray`. (Separate from the rest, and run last in a
-/// case, so that a failure here does not hide the others.)
+/// [ASSERT: rays past the screen continue it] The docs promise that columns and rows outside
+/// the screen, up to the last `u32`, continue the screen plane without wrapping: the rays
+/// there are checked like those on it, and `row_rays` of rows past the screen refused.
+/// (Separate from the rest, and run last in a case, so that a failure here does not hide the
+/// others.)
 pub fn check_rays_past_the_screen(spec: &CameraSpec, camera: &Camera) {
-    let (cols, rows) = (camera.cols(), camera.rows());
+    let (cols, rows) = (camera.width(), camera.height());
     let mut pixels = Vec::new();
     for far in [
         cols,
         cols.saturating_add(1),
         cols.saturating_mul(2),
         40000,
-        u16::MAX,
+        u32::from(u16::MAX),
+        u32::MAX,
     ] {
-        pixels.push((rows / 2, far));
-        pixels.push((far, cols / 2));
+        pixels.push((far, rows / 2));
+        pixels.push((cols / 2, far));
     }
+    pixels.push((u32::MAX, u32::MAX));
     check_rays(spec, camera, &pixels);
-    for row in [rows, u16::MAX] {
-        assert!(
-            camera.row_rays(row).is_err(),
-            "row_rays({row}) past the screen"
-        );
+    for y in [rows, u32::from(u16::MAX) + 1, u32::MAX] {
+        assert!(camera.row_rays(y).is_err(), "row_rays({y}) past the screen");
     }
 }
 
@@ -824,21 +833,21 @@ pub fn check_rays_past_the_screen(spec: &CameraSpec, camera: &Camera) {
 /// unit a component (√3/2 units over a length of at least `f` pixels), the view distance in
 /// pixels to half a unit (half a unit over `f`), and the normalisation adds √3 units: with
 /// the view direction's √3, below `6 + 2/f`.
-pub fn check_rays(spec: &CameraSpec, camera: &Camera, pixels: &[(u16, u16)]) {
-    let (cols, rows) = (camera.cols(), camera.rows());
-    for &(row, col) in pixels {
-        let ray = camera.ray(row, col);
-        let (exact, f, sin) = spec.exact_ray(camera, row as f64, col as f64);
+pub fn check_rays(spec: &CameraSpec, camera: &Camera, pixels: &[(u32, u32)]) {
+    let (cols, rows) = (camera.width(), camera.height());
+    for &(col, row) in pixels {
+        let ray = camera.ray(col, row);
+        let (exact, f, sin) = spec.exact_ray(camera, col as f64, row as f64);
         let got = ray.dir.to_f64();
         assert_eq!(
             ray.origin,
             camera.eye(),
-            "ray({row}, {col}) leaves from the eye"
+            "ray({col}, {row}) leaves from the eye"
         );
         let len = norm(got);
         assert!(
             (len - 1.0).abs() <= UNIT_TOLERANCE,
-            "ray({row}, {col}) of {spec:?}: |dir| = {len} (dir {:?})",
+            "ray({col}, {row}) of {spec:?}: |dir| = {len} (dir {:?})",
             ray.dir
         );
         // Where the pixel-unit direction's components may not fit Q16.16 (beyond 2¹⁵ pixels),
@@ -853,29 +862,29 @@ pub fn check_rays(spec: &CameraSpec, camera: &Camera, pixels: &[(u16, u16)]) {
             let allowed = ULP * (6.0 + 2.0 / f + 9.0 / sin);
             assert!(
                 angle <= allowed,
-                "ray({row}, {col}) of {spec:?} is {angle} rad off the exact camera's \
+                "ray({col}, {row}) of {spec:?} is {angle} rad off the exact camera's \
                  (allowed {allowed}; dir {:?}, exact {exact:?})",
                 ray.dir
             );
         } else {
             assert!(
                 dot(got, exact) > 0.0,
-                "ray({row}, {col}) of {spec:?} looks away from the exact camera's ray: \
+                "ray({col}, {row}) of {spec:?} looks away from the exact camera's ray: \
                  dir {:?}, exact {exact:?}",
                 ray.dir
             );
         }
         // The supersampling ray at n = 1 (or 0, clamped to 1) is the pixel's ray.
-        assert_eq!(camera.sample_ray(row, col, 0, 0, 1), ray, "sample_ray n=1");
-        assert_eq!(camera.sample_ray(row, col, 0, 0, 0), ray, "sample_ray n=0");
-        let _ = camera.pixel_centre(row, col);
+        assert_eq!(camera.sample_ray(col, row, 0, 0, 1), ray, "sample_ray n=1");
+        assert_eq!(camera.sample_ray(col, row, 0, 0, 0), ray, "sample_ray n=0");
+        let _ = camera.pixel_centre(col, row);
     }
     // [ASSERT: RowRays is Camera::ray] for the last row of the screen.
     let row = rows - 1;
     let rays = camera.row_rays(row).expect("the last row is on the screen");
     for (col, ray) in (0..).zip(rays) {
         if col % 97 == 0 || col + 1 == cols {
-            assert_eq!(ray, camera.ray(row, col), "row_rays({row}) column {col}");
+            assert_eq!(ray, camera.ray(col, row), "row_rays({row}) column {col}");
         }
     }
     assert_eq!(
@@ -1014,8 +1023,8 @@ pub fn check_surface_through_origin<const N: usize>(scene: &Scene<N>, ray: &Ray)
 /// against the per-pixel ray of the camera, traced one by one. Also every hit (check_hit) and
 /// the surface-through-origin rule. Rows past the screen are refused by `render_row` and
 /// `render_row_supersampled`.
-pub fn check_row<const N: usize>(scene: &Scene<N>, camera: &Camera, row: u16) -> Vec<Rgb> {
-    let cols = camera.cols() as usize;
+pub fn check_row<const N: usize>(scene: &Scene<N>, camera: &Camera, row: u32) -> Vec<Rgb> {
+    let cols = camera.width() as usize;
     let mut out = vec![Rgb::BLACK; cols];
     let rendered = fixray::render_row(scene, camera, row, &mut out);
     // [ASSERT: Err for rows out of range and wrong buffers]
@@ -1042,7 +1051,7 @@ pub fn check_row<const N: usize>(scene: &Scene<N>, camera: &Camera, row: u16) ->
         |run| skipped.push(run),
         |col, ray, hit| seen.push((col, *ray, hit)),
     );
-    if row >= camera.rows() {
+    if row >= camera.height() {
         assert!(
             rendered.is_err(),
             "render_row({row}) past the screen must be refused"
@@ -1052,9 +1061,10 @@ pub fn check_row<const N: usize>(scene: &Scene<N>, camera: &Camera, row: u16) ->
             "render_row_supersampled({row}) past the screen must be refused"
         );
         // Every row entry point refuses the row the same way, and hands nothing over.
+        // Rows past u16::MAX are named as u16::MAX.
         let refused = fixray::Error::RowOutOfRange {
-            row,
-            rows: camera.rows(),
+            row: u16::try_from(row).unwrap_or(u16::MAX),
+            rows: camera.height() as u16,
         };
         assert_eq!(rendered, Err(refused), "render_row({row})");
         assert_eq!(shot_row, Err(refused), "shoot_row({row})");
@@ -1070,7 +1080,7 @@ pub fn check_row<const N: usize>(scene: &Scene<N>, camera: &Camera, row: u16) ->
     assert_eq!(hits.len(), cols, "shoot_row hands over every column");
     for (col, (c, ray, hit)) in hits.iter().enumerate() {
         assert_eq!(*c as usize, col, "shoot_row in column order");
-        let own = camera.ray(row, *c);
+        let own = camera.ray(*c, row);
         assert_eq!(*ray, own, "shoot_row's ray is the camera's, column {col}");
         let shot = scene.shoot(&own);
         assert_eq!(
@@ -1091,7 +1101,7 @@ pub fn check_row<const N: usize>(scene: &Scene<N>, camera: &Camera, row: u16) ->
         );
     }
     // shoot_row_skipping: every column once, in order; skipped runs meet nothing.
-    let mut next = 0u16;
+    let mut next = 0u32;
     let (mut s, mut e) = (skipped.iter().peekable(), seen.iter().peekable());
     while (next as usize) < cols {
         if let Some(run) = s.peek()
@@ -1099,7 +1109,7 @@ pub fn check_row<const N: usize>(scene: &Scene<N>, camera: &Camera, row: u16) ->
         {
             assert!(run.end > run.start, "an empty skipped run");
             for col in (*run).clone() {
-                let ray = camera.ray(row, col);
+                let ray = camera.ray(col, row);
                 assert_eq!(
                     scene.shoot(&ray),
                     None,
@@ -1111,7 +1121,7 @@ pub fn check_row<const N: usize>(scene: &Scene<N>, camera: &Camera, row: u16) ->
         } else if let Some((col, ray, hit)) = e.peek()
             && *col == next
         {
-            assert_eq!(*ray, camera.ray(row, *col));
+            assert_eq!(*ray, camera.ray(*col, row));
             assert_eq!(*hit, scene.shoot(ray));
             next += 1;
             e.next();
@@ -1131,11 +1141,11 @@ pub fn check_row<const N: usize>(scene: &Scene<N>, camera: &Camera, row: u16) ->
 pub fn check_supersampled<const N: usize>(
     scene: &Scene<N>,
     camera: &Camera,
-    row: u16,
+    row: u32,
     n: u8,
     plain: &[Rgb],
 ) {
-    let mut out = vec![Rgb::BLACK; camera.cols() as usize];
+    let mut out = vec![Rgb::BLACK; camera.width() as usize];
     fixray::render_row_supersampled(scene, camera, row, n, &mut out)
         .unwrap_or_else(|e| panic!("render_row_supersampled({row}, {n}): {e}"));
     if n <= 1 {
@@ -1143,11 +1153,11 @@ pub fn check_supersampled<const N: usize>(
         return;
     }
     let n = n.min(16);
-    for (col, pixel) in out.iter().enumerate() {
+    for (col, pixel) in (0..).zip(out.iter()) {
         let mut sum = [0u32; 3];
         for sy in 0..n {
             for sx in 0..n {
-                let ray = camera.sample_ray(row, col as u16, sx, sy, n);
+                let ray = camera.sample_ray(col, row, sx, sy, n);
                 let length = length(ray.dir);
                 assert!((length - 1.0).abs() <= UNIT_TOLERANCE, "sample ray {ray:?}");
                 let c = scene.trace(&ray);
@@ -1178,16 +1188,16 @@ pub fn check_supersampled<const N: usize>(
 ///
 /// Mirrors are left out: their bounces start from points the public API does not give (the
 /// mirror ray is private to the shading), so the same brute force cannot follow them.
-pub fn check_shadows<const N: usize>(world: &World, camera: &Camera, row: u16) {
-    if row >= camera.rows() {
+pub fn check_shadows<const N: usize>(world: &World, camera: &Camera, row: u32) {
+    if row >= camera.height() {
         return;
     }
     let Some(scene) = world.build_with_lights::<N>(&world.lights, true) else {
         return;
     };
     let mut lit_only: HashMap<u32, Scene<N>> = HashMap::new();
-    for col in 0..camera.cols() {
-        let ray = camera.ray(row, col);
+    for col in 0..camera.width() {
+        let ray = camera.ray(col, row);
         let Some(hit) = scene.shoot(&ray) else {
             continue;
         };
@@ -1287,18 +1297,19 @@ pub fn check_viewport<const N: usize>(
     camera: &Camera,
     frame: &[Vec<Rgb>],
 ) {
-    let (cols, rows) = (camera.cols(), camera.rows());
+    let (cols, rows) = (camera.width(), camera.height());
     let top_left = corner(src);
     let size = if src.one_in(5) {
-        Size::new(src.below(3) as u32 + cols as u32 - 1, rows as u32)
+        Size::new(src.below(3) as u32 + cols - 1, rows)
     } else {
-        Size::new(cols as u32, rows as u32)
+        Size::new(cols, rows)
     };
     let area = Rectangle::new(top_left, size);
     let viewport = Viewport::new(scene, camera, area);
     let fits = top_left.x.checked_add(cols as i32).is_some()
         && top_left.y.checked_add(rows as i32).is_some();
-    if size != Size::new(cols as u32, rows as u32) || !fits {
+    assert_eq!(camera.size(), Size::new(cols, rows), "the camera's size");
+    if size != Size::new(cols, rows) || !fits {
         assert!(
             viewport.is_err(),
             "viewport {area:?} for {cols}×{rows} must be refused"
@@ -1313,7 +1324,7 @@ pub fn check_viewport<const N: usize>(
         _ => cols as usize * (1 + src.below(rows as u64 + 2) as usize) + src.below(3) as usize,
     };
     let mut buffer = vec![Rgb::BLACK; buffer_len];
-    let bands = viewport.bands(src.pick(&[0, 1, 3, u16::MAX]));
+    let bands = viewport.bands(src.pick(&[0, 1, 3, u32::MAX]));
     let mut rgb = Recorder::<Rgb888> {
         size: Size::new(u32::MAX, u32::MAX),
         pixels: HashMap::new(),
@@ -1407,7 +1418,7 @@ pub fn check_framebuffer<const N: usize, const W: usize, const H: usize>(
     use embedded_graphics::image::{GetPixel, ImageDrawable};
     let mut fb = Framebuffer::<W, H>::new();
     let result = fixray::render(scene, camera, &mut fb);
-    if (camera.cols() as usize, camera.rows() as usize) != (W, H) {
+    if (camera.width() as usize, camera.height() as usize) != (W, H) {
         assert!(
             result.is_err(),
             "render into a {W}×{H} framebuffer must be refused"
@@ -1473,7 +1484,7 @@ pub struct Case {
     pub capacity: usize,
     pub world: World,
     pub camera: CameraSpec,
-    pub rows: Vec<u16>,
+    pub rows: Vec<u32>,
     pub supersample: u8,
 }
 
@@ -1506,9 +1517,9 @@ pub fn case(src: &mut impl Source) -> Case {
     let rows = (0..2 + src.below(3))
         .map(|_| {
             if src.one_in(6) {
-                src.pick(&[30, 40000, u16::MAX])
+                src.pick(&[30, 40000, u32::from(u16::MAX) + 1, u32::MAX])
             } else {
-                src.below(30) as u16
+                src.below(30) as u32
             }
         })
         .collect();
@@ -1539,11 +1550,11 @@ fn run_scene<const N: usize>(src: &mut impl Source, case: &Case, camera: &Camera
         return;
     };
     // Big screens are checked on one row, small ones whole: a few seconds in a debug build.
-    let (cols, rows) = (camera.cols() as usize, camera.rows() as usize);
+    let (cols, rows) = (camera.width() as usize, camera.height() as usize);
     let small = cols * rows <= 40 * 30;
-    let mut checked_rows: Vec<u16> = case.rows.clone();
+    let mut checked_rows: Vec<u32> = case.rows.clone();
     if small {
-        checked_rows.extend(0..camera.rows());
+        checked_rows.extend(0..camera.height());
     }
     let mut frame = vec![Vec::new(); if small { rows } else { 0 }];
     for &row in &checked_rows {

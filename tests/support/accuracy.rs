@@ -57,15 +57,15 @@ impl Accuracy {
         camera: &Camera,
         dscene: &DScene<N, L>,
         dcamera: &DCamera,
-        mut each: impl FnMut(u16, u16, Rgb, Rgb),
+        mut each: impl FnMut(u32, u32, Rgb, Rgb),
     ) -> Self {
         let mut acc = Accuracy::default();
-        for row in 0..camera.rows() {
-            for col in 0..camera.cols() {
-                let ray = camera.ray(row, col);
+        for row in 0..camera.height() {
+            for col in 0..camera.width() {
+                let ray = camera.ray(col, row);
                 let hit = scene.shoot(&ray);
                 let seen = scene.shade(&ray, hit.as_ref());
-                let (dhit, dseen) = dscene.trace(&dcamera.ray(row, col));
+                let (dhit, dseen) = dscene.trace(&dcamera.ray(col, row));
                 let same = hit.map(|h| h.object) == dhit.map(|h| h.object);
                 acc.add(seen, dseen, same);
                 each(row, col, seen, dseen);

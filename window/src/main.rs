@@ -56,16 +56,13 @@ struct Orbit {
 }
 
 impl Orbit {
-    fn camera(&self, cols: u16, rows: u16) -> Result<Camera, fixray::Error> {
-        Camera::orbit(
-            TARGET,
-            DISTANCE,
-            self.azimuth,
-            self.elevation,
-            self.fov,
-            cols,
-            rows,
-        )
+    fn camera(&self, cols: u32, rows: u32) -> Result<Camera, fixray::Error> {
+        Camera::orbit(TARGET, DISTANCE)
+            .yaw_degrees(self.azimuth)
+            .pitch_degrees(self.elevation)
+            .fov_degrees(self.fov)
+            .size(Size::new(cols, rows))
+            .build()
     }
 
     /// The orbit after `key`.
@@ -91,8 +88,8 @@ impl Orbit {
 /// What the command line asked for.
 struct Options {
     classic: bool,
-    cols: u16,
-    rows: u16,
+    cols: u32,
+    rows: u32,
 }
 
 /// `Ok(None)` means `--help`.
@@ -128,9 +125,9 @@ fn parse(args: impl IntoIterator<Item = String>) -> Result<Option<Options>, Stri
                 let bad = || format!("--size wants WIDTHxHEIGHT, 1 to 1024 a side, not '{text}'");
                 let (w, h) = text.split_once(['x', 'X']).ok_or_else(bad)?;
                 let side = |s: &str| {
-                    s.parse::<u16>()
+                    s.parse::<u32>()
                         .ok()
-                        .filter(|&n| n >= 1 && usize::from(n) <= MAX_COLS && n <= MAX_PIXELS)
+                        .filter(|&n| n >= 1 && n as usize <= MAX_COLS && n <= MAX_PIXELS)
                 };
                 options.cols = side(w).ok_or_else(bad)?;
                 options.rows = side(h).ok_or_else(bad)?;
@@ -167,10 +164,11 @@ fn frame(
         orbit.elevation,
         orbit.fov
     );
-    let line = Point::new(1, i32::from(options.rows) + 1);
+    // At most 4096 rows (parse keeps them so): the row fits i32.
+    let line = Point::new(1, options.rows as i32 + 1);
     let under = Rectangle::new(
-        Point::new(0, i32::from(options.rows)),
-        Size::new(options.cols.into(), STATUS),
+        Point::new(0, options.rows as i32),
+        Size::new(options.cols, STATUS),
     );
     let Ok(()) = display.fill_solid(&under, Rgb888::BLACK);
     let style = MonoTextStyle::new(&FONT_6X10, Rgb888::WHITE);
@@ -185,7 +183,7 @@ fn run(options: &Options) -> Result<(), String> {
     } else {
         demo::scene()
     };
-    let (cols, rows) = (u32::from(options.cols), u32::from(options.rows));
+    let (cols, rows) = (options.cols, options.rows);
     let mut display = SimulatorDisplay::<Rgb888>::new(Size::new(cols, rows + STATUS));
     let scale = (640 / cols).min(480 / rows).clamp(1, 8);
     let mut window = Window::new(

@@ -23,7 +23,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// // The top row looks 29.8° up; the highest sphere, (7, 5, −18) r 4, reaches 27.1°: the
     /// // row can meet only the ground plane, object 0.
     /// assert_eq!(among & 0b11111, 0b00001);
-    /// let ray = camera.ray(0, 80);
+    /// let ray = camera.ray(80, 0);
     /// assert_eq!(scene.shoot_among(&ray, among), scene.shoot(&ray));
     /// ```
     #[must_use]

@@ -16,10 +16,10 @@ use crate::render::camera::Camera;
 /// use fixray::demo;
 /// let camera = demo::camera(160, 128).unwrap();
 /// for (col, ray) in (0..).zip(camera.row_rays(40)?) {
-///     assert_eq!(ray, camera.ray(40, col));
+///     assert_eq!(ray, camera.ray(col, 40));
 /// }
 /// assert_eq!(camera.row_rays(40)?.count(), 160);
-/// assert_eq!(camera.row_rays(40)?.nth(100), Some(camera.ray(40, 100)));
+/// assert_eq!(camera.row_rays(40)?.nth(100), Some(camera.ray(100, 40)));
 /// assert!(camera.row_rays(128).is_err()); // past the bottom row
 /// # Ok::<(), fixray::Error>(())
 /// ```
