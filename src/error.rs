@@ -104,16 +104,16 @@ pub enum Error {
     /// A column past the right edge of the camera's picture.
     ColumnOutOfRange {
         /// The column asked for.
-        col: u16,
+        col: u32,
         /// The columns the camera has (valid columns are `0..cols`).
-        cols: u16,
+        cols: u32,
     },
     /// A display row past the bottom of the camera's picture.
     RowOutOfRange {
         /// The row asked for.
-        row: u16,
+        row: u32,
         /// The rows the camera has (valid rows are `0..rows`).
-        rows: u16,
+        rows: u32,
     },
     /// A camera and a framebuffer or display area of different sizes.
     SizeMismatch {

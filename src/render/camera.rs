@@ -544,8 +544,8 @@ impl Camera {
         match u16::try_from(y) {
             Ok(row) if row < self.rows => Ok(row),
             _ => Err(Error::RowOutOfRange {
-                row: u16::try_from(y).unwrap_or(u16::MAX),
-                rows: self.rows,
+                row: y,
+                rows: u32::from(self.rows),
             }),
         }
     }
@@ -557,8 +557,8 @@ impl Camera {
             Ok(col) if col < self.cols => {}
             _ => {
                 return Err(Error::ColumnOutOfRange {
-                    col: u16::try_from(x).unwrap_or(u16::MAX),
-                    cols: self.cols,
+                    col: x,
+                    cols: u32::from(self.cols),
                 });
             }
         }
