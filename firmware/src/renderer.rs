@@ -168,8 +168,9 @@ const SKIPS: usize = 4;
 /// that nothing is optimised away. The runs are found when it is made, not while measured.
 pub struct FixedRays {
     camera: Camera,
-    /// For each row, the runs of columns `render_row` makes no rays for.
-    skips: [[(u32, u32); SKIPS]; ROWS as usize],
+    /// For each row, the runs of columns `render_row` makes no rays for, as `u16` (a screen is
+    /// at most 4096 wide) to keep the table small on a 16 KiB chip.
+    skips: [[(u16, u16); SKIPS]; ROWS as usize],
 }
 
 impl Renderer for FixedRays {
@@ -178,7 +179,8 @@ impl Renderer for FixedRays {
 
     fn new(variant: Variant, cols: u32, rows: u32) -> Result<Self, Error> {
         let (scene, camera) = (variant.scene()?, variant.camera(cols, rows)?);
-        let mut skips = [[(cols, cols); SKIPS]; ROWS as usize];
+        let width = u16::try_from(cols).map_err(|_| Error::CapacityExceeded { capacity: 4096 })?;
+        let mut skips = [[(width, width); SKIPS]; ROWS as usize];
         let too_many = Error::CapacityExceeded { capacity: SKIPS };
         for (row, runs) in (0..rows).zip(skips.iter_mut()) {
             let mut count = 0;
@@ -188,7 +190,8 @@ impl Renderer for FixedRays {
                 row,
                 |run| {
                     if let Some(slot) = runs.get_mut(count) {
-                        *slot = (run.start, run.end);
+                        // Runs lie within the row, which fits u16.
+                        *slot = (run.start as u16, run.end as u16);
                     }
                     count += 1;
                 },
@@ -208,7 +211,9 @@ impl Renderer for FixedRays {
         let mut rays = self.camera.row_rays(row)?;
         let mut col = 0u32;
         let skips = self.skips.get(row as usize).into_iter().flatten();
-        for &(first, end) in skips.chain([&(self.camera.width(), self.camera.width())]) {
+        let width = self.camera.width();
+        let runs = skips.map(|&(first, end)| (u32::from(first), u32::from(end)));
+        for (first, end) in runs.chain([(width, width)]) {
             while col < first {
                 let Some(ray) = rays.next() else { break };
                 if let Some(pixel) = out.get_mut(col as usize) {

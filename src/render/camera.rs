@@ -79,6 +79,7 @@ pub struct Camera {
 
 /// A screen size as the builders take it, checked to 1..=4096 pixels a side: its width and
 /// height as the camera keeps them.
+#[inline]
 fn check_size(size: Size) -> Result<(u16, u16), Error> {
     if size.width == 0 || size.height == 0 {
         return Err(Error::DegenerateCamera(CameraProblem::NoPixels));
@@ -273,6 +274,7 @@ impl Camera {
     }
 
     /// The pinhole camera of [`Camera::pinhole`], its size in pixels checked.
+    #[inline]
     fn pinhole_checked(w: f32, h: f32, z_p: f32, cols: u16, rows: u16) -> Result<Self, Error> {
         check_resolution(cols, rows)?;
         positive(w, Quantity::ScreenWidth)?;
@@ -776,6 +778,7 @@ impl Pinhole {
     /// The camera, or why it cannot be made: a size with no pixels (the size was never set)
     /// or wider or taller than 4096 is [`Error::DegenerateCamera`]; see [`Camera::pinhole`]
     /// for the rest.
+    #[inline]
     pub fn build(self) -> Result<Camera, Error> {
         let (cols, rows) = check_size(self.size)?;
         Camera::pinhole_checked(self.screen_w, self.screen_h, self.distance, cols, rows)
