@@ -820,6 +820,7 @@ impl LookAt {
     /// The camera, or why it cannot be made: a size with no pixels (the size was never set)
     /// or wider or taller than 4096 is [`Error::DegenerateCamera`]; see [`Camera::look_at`]
     /// for the rest.
+    #[inline]
     pub fn build(self) -> Result<Camera, Error> {
         let (cols, rows) = check_size(self.size)?;
         Camera::look_at_checked(self.eye, self.target, self.up, self.fov_degrees, cols, rows)
