@@ -10,7 +10,6 @@ use crate::geometry::ray::Ray;
 use crate::numbers::fx::{FRAC, Fx};
 use crate::numbers::isqrt::isqrt;
 use crate::numbers::vec3::Vec3;
-use crate::render::accel::row_rays::RowRays;
 
 /// Largest screen size in pixels, per side.
 pub const MAX_PIXELS: u32 = 4096;
@@ -670,14 +669,6 @@ impl Camera {
         // pixel centres off the screen are farther from the eye, so p is never zero.
         let dir = self.towards(x, y).normalize_or_zero();
         Ray::new_unchecked(self.eye, dir)
-    }
-
-    /// The rays of display row `y` (0 at the top), left to right: [`Camera::ray`] for each
-    /// column, found for less (see [`RowRays`]). A row outside the screen is
-    /// [`Error::RowOutOfRange`] (its rays are [`Camera::ray`]'s).
-    pub fn row_rays(&self, y: u32) -> Result<RowRays<'_>, Error> {
-        let row = self.check_row(y)?;
-        Ok(RowRays::new(self, row))
     }
 
     /// From the eye towards the centre of pixel (`row`, 0), unnormalised: with

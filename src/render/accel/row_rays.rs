@@ -1,6 +1,7 @@
 //! [`RowRays`]: the rays of a display row, in column order, for a few additions each before
 //! normalising; and [`RowSquares`], the squared lengths that make that possible.
 
+use crate::error::Error;
 use crate::geometry::ray::Ray;
 use crate::numbers::vec3::Vec3;
 use crate::render::camera::Camera;
@@ -29,6 +30,17 @@ pub struct RowRays<'a> {
     towards: Vec3,
     squares: RowSquares,
     left: u16,
+}
+
+// Here rather than in `camera.rs`, so that the camera knows nothing of its accelerations.
+impl Camera {
+    /// The rays of display row `y` (0 at the top), left to right: [`Camera::ray`] for each
+    /// column, found for less (see [`RowRays`]). A row outside the screen is
+    /// [`Error::RowOutOfRange`].
+    pub fn row_rays(&self, y: u32) -> Result<RowRays<'_>, Error> {
+        let row = self.check_row(y)?;
+        Ok(RowRays::new(self, row))
+    }
 }
 
 impl<'a> RowRays<'a> {
