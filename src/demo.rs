@@ -1,4 +1,4 @@
-//! The scenes shared by the examples, the tests and the firmware.
+//! The scenes shared by the examples, the tests and the firmware (feature `demo`).
 //!
 //! - [`scene`]: four matte spheres over a ground plane, lit from the upper left behind the
 //!   viewer, seen by the chapter's pinhole camera ([`camera`]) from the origin down −z with a

@@ -62,7 +62,8 @@
 //!   [`Viewport`] drawn as one [`Picture`] (an embedded-graphics `Drawable`) or band by band,
 //!   in every embedded-graphics colour type ([`FromRgb`]), Bayer-dithered where a channel has
 //!   fewer than 8 bits; [`DrawError`] for anything that draws
-//! - [`demo`]: the scenes the examples, tests and firmware share (demo and classic)
+//! - `demo` (feature `demo`): the scenes the examples, tests and firmware share (demo and
+//!   classic)
 //! - an independent f64 model of the same maths is a crate of its own, `fixray-reference`
 //!   (the `reference/` folder), which sees only this public API
 
@@ -70,6 +71,7 @@
 #![forbid(unsafe_code)]
 #![deny(missing_docs, rustdoc::broken_intra_doc_links)]
 
+#[cfg(feature = "demo")]
 pub mod demo;
 pub mod draw;
 mod error;
