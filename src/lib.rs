@@ -23,7 +23,7 @@
 //!
 //! One scalar, [`Fx`] (Q16.16: 16 integer bits, 16 fractional, a step of 2⁻¹⁶ ≈ 1.5 × 10⁻⁵).
 //! Products and dot products are formed exactly at 64 bits and rounded once; square roots are
-//! exact integer floors ([`isqrt`]) of those 64-bit values. Floats appear only at set-up
+//! exact integer floors (`isqrt`) of those 64-bit values. Floats appear only at set-up
 //! (camera construction, `f32` inputs), never per pixel.
 //!
 //! # The overflow budget
@@ -45,7 +45,7 @@
 //! # The pipeline, layer by layer
 //!
 //! The source folders are the layers, each using only the ones above it:
-//! - `numbers/`: [`Fx`] and its exact products ([`mul`]), integer square roots ([`isqrt`]),
+//! - `numbers/`: [`Fx`] and its exact products ([`mul`]), integer square roots (`isqrt`),
 //!   reciprocals (a table-seeded reciprocal square root, and division by it), [`Vec3`].
 //! - `geometry/`: the chapter's [`Ray`] (Eq. 4.1), [`Plane`] (Eq. 4.2) and [`Sphere`]
 //!   (section 4.4), pure intersection functions returning a [`Hit`]; [`Shape`] is either.
@@ -92,7 +92,10 @@ pub use error::{CameraProblem, Error, Quantity};
 pub use framebuffer::Framebuffer;
 pub use geometry::{Hit, Plane, Ray, Shape, Sphere};
 pub use hash::FrameHash;
-pub use numbers::{FAR, Fx, LIMIT, Vec3, fx_from_f32, isqrt, mul};
+pub use numbers::{FAR, Fx, LIMIT, Vec3, fx_from_f32, mul};
+// Not stable API: the integer square root the geometry uses, for tests; hidden from the docs.
+#[doc(hidden)]
+pub use numbers::isqrt;
 pub use render::{
     Camera, LookAt, MAX_PIXELS, Orbit, Pinhole, RowRays, render, render_row,
     render_row_supersampled, shoot_row, shoot_row_skipping,

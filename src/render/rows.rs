@@ -114,6 +114,8 @@ pub fn shoot_row<const N: usize, const L: usize>(
 /// assert_eq!((skipped, shot), (40, 0)); // the top row sees only sky
 /// # Ok::<(), fixray::Error>(())
 /// ```
+// Not stable API: for fixray's profiling firmware and tests, hidden from the docs.
+#[doc(hidden)]
 pub fn shoot_row_skipping<const N: usize, const L: usize>(
     scene: &Scene<N, L>,
     camera: &Camera,

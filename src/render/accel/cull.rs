@@ -26,6 +26,8 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// let ray = camera.ray(80, 0);
     /// assert_eq!(scene.shoot_among(&ray, among), scene.shoot(&ray));
     /// ```
+    // Not stable API: for fixray's profiling firmware and tests, hidden from the docs.
+    #[doc(hidden)]
     #[must_use]
     pub fn seen_from_row(&self, camera: &crate::Camera, row: u16) -> u64 {
         let Some(normal) = camera.row_plane_normal(row) else {
@@ -51,6 +53,8 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// The nearest hit among the objects whose bit is set in `among` (bit `i` for object `i`;
     /// objects past the 64th are always tried). Distances first; the hit point and normal
     /// only for the nearest.
+    // Not stable API: for fixray's profiling firmware and tests, hidden from the docs.
+    #[doc(hidden)]
     #[must_use]
     pub fn shoot_among(&self, ray: &Ray, among: u64) -> Option<Hit> {
         let ray = &ray.bounded();
