@@ -26,7 +26,7 @@
 //! f32's error of a rim, and ±1 to 99.9 % of pixels (measured: 99.956 %, the 9 ties).
 
 use fixray::{Rgb, demo};
-use fixray_reference::{self as reference, DCamera, DHit, DScene, DShape, DVec3, Real};
+use fixray_reference::{self as reference, DCamera, DHit, DScene, DShape, Real};
 
 const COLS: u32 = 160;
 const ROWS: u32 = 128;
@@ -149,13 +149,7 @@ fn the_classic_scene_in_f32_is_the_f64_picture_but_for_ties() {
 }
 
 #[test]
-fn the_f32_model_computes_in_f32() {
-    // A sum that f64 holds and f32 cannot: 1 + 2⁻³⁰ is 1 in f32. If the f32 model secretly
-    // computed in f64 this would see the difference.
-    let (a, b) = (DVec3::<f32>::new(1.0, 0.0, 0.0), DVec3::new(1e-9, 0.0, 0.0));
-    assert_eq!((a + b).x, 1.0);
-    let (a, b) = (DVec3::<f64>::new(1.0, 0.0, 0.0), DVec3::new(1e-9, 0.0, 0.0));
-    assert_ne!((a + b).x, 1.0);
+fn the_f32_model_renders_into_the_same_pixels() {
     // The f32 render path ends in the same pixels type, so frames compare directly.
     let mut frame = [Rgb::BLACK; 4 * 3];
     let scene: DScene<8, 4, f32> = DScene::from_scene(&demo::scene()).unwrap();

@@ -279,44 +279,6 @@ fn supersampling_blends_an_edge() {
 }
 
 #[test]
-fn culling_spheres_per_row_changes_no_pixel() {
-    // render_row skips spheres that a row's plane of rays cannot meet; every pixel must still
-    // be what tracing its ray against every object gives.
-    for (scene, camera) in [
-        (
-            fixray::demo::scene(),
-            fixray::demo::camera(160, 128).unwrap(),
-        ),
-        (
-            fixray::demo::classic(),
-            fixray::demo::classic_camera(160, 128).unwrap(),
-        ),
-        (
-            fixray::demo::classic(),
-            Camera::orbit([0.0, 0.0, -15.0], 15.0)
-                .yaw_degrees(40.0)
-                .pitch_degrees(25.0)
-                .fov_degrees(50.0)
-                .size(Size::new(97, 61))
-                .build()
-                .unwrap(),
-        ),
-    ] {
-        let mut row = vec![Rgb::BLACK; camera.width() as usize];
-        for y in 0..camera.height() {
-            render_row(&scene, &camera, y, &mut row).unwrap();
-            for (x, &pixel) in row.iter().enumerate() {
-                assert_eq!(
-                    pixel,
-                    scene.trace(&camera.ray(x as u32, y)),
-                    "pixel ({x}, {y})"
-                );
-            }
-        }
-    }
-}
-
-#[test]
 fn materials_and_lights_built_by_hand_out_of_range_do_not_panic() {
     // Material, Checker and Light have public fields, so a caller can skip their checked
     // constructors: huge weights saturate to white, a checker of no size is one colour.

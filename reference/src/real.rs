@@ -157,10 +157,4 @@ mod tests {
         behaves::<f64>();
         behaves::<f32>();
     }
-
-    #[test]
-    fn conversions_round_to_nearest() {
-        assert_eq!(<f32 as Real>::from_f64(0.1), 0.1_f32);
-        assert_eq!(<f64 as Real>::from_f64(0.1), 0.1_f64);
-    }
 }
