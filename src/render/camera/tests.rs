@@ -44,26 +44,14 @@ fn picture_is_upright_and_unmirrored() {
 
 #[test]
 fn stepping_along_a_row_gives_every_pixel_its_own_ray() {
-    let cameras = [
-        Camera::pinhole(3.7, 2.1, 1.3)
-            .size(Size::new(53, 37))
-            .build()
-            .unwrap(),
-        Camera::look_at([1.0, 2.0, 3.0], [-4.0, 0.5, -9.0])
-            .up([0.1, 1.0, 0.2])
-            .fov_degrees(47.0)
-            .size(Size::new(61, 29))
-            .build()
-            .unwrap(),
-        Camera::orbit([0.0, 0.0, -16.0], 20.0)
-            .yaw_degrees(33.0)
-            .pitch_degrees(21.0)
-            .fov_degrees(75.0)
-            .size(Size::new(40, 64))
-            .build()
-            .unwrap(),
-    ];
-    for camera in cameras {
+    let orbit = Camera::orbit([0.0, 0.0, -16.0], 20.0)
+        .yaw_degrees(33.0)
+        .pitch_degrees(21.0)
+        .fov_degrees(75.0)
+        .size(Size::new(40, 64))
+        .build()
+        .unwrap();
+    for camera in odd_cameras().into_iter().chain([orbit]) {
         for y in 0..camera.height() {
             let mut towards = camera.row_start(y as u16);
             let mut square = RowSquares::new(towards, camera.column_step());
@@ -265,23 +253,12 @@ fn doubled_angles_are_good_to_a_millionth_of_a_millidegree() {
 fn sample_directions_are_the_wide_ones_divided_once_and_rounded_half_up() {
     // The shift-then-divide rounding of `towards_sample` against one plain division by
     // 2n·2^shift, on and off the screen, for every grid size.
-    let cameras = [
-        Camera::pinhole(3.7, 2.1, 1.3)
-            .size(Size::new(53, 37))
-            .build()
-            .unwrap(),
-        Camera::look_at([1.0, 2.0, 3.0], [-4.0, 0.5, -9.0])
-            .up([0.1, 1.0, 0.2])
-            .fov_degrees(47.0)
-            .size(Size::new(61, 29))
-            .build()
-            .unwrap(),
-        Camera::look_at([0.0; 3], [0.0, 0.0, -1.0])
-            .fov_degrees(150.0)
-            .size(Size::new(4096, 4096))
-            .build()
-            .unwrap(),
-    ];
+    let wide = Camera::look_at([0.0; 3], [0.0, 0.0, -1.0])
+        .fov_degrees(150.0)
+        .size(Size::new(4096, 4096))
+        .build()
+        .unwrap();
+    let cameras = odd_cameras().into_iter().chain([wide]);
     let mut random = crate::xorshift::XorShift(0x70_3a2d);
     let mut scaled = 0;
     for camera in cameras {
@@ -437,4 +414,21 @@ fn degenerate_cameras_are_refused() {
             quantity: Quantity::ScreenDistance
         }
     ));
+}
+
+/// A pinhole with non-square pixels and a tilted look-at camera, both of odd sizes: cameras
+/// whose rays share nothing with the axes.
+fn odd_cameras() -> [Camera; 2] {
+    [
+        Camera::pinhole(3.7, 2.1, 1.3)
+            .size(Size::new(53, 37))
+            .build()
+            .unwrap(),
+        Camera::look_at([1.0, 2.0, 3.0], [-4.0, 0.5, -9.0])
+            .up([0.1, 1.0, 0.2])
+            .fov_degrees(47.0)
+            .size(Size::new(61, 29))
+            .build()
+            .unwrap(),
+    ]
 }
