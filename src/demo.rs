@@ -9,53 +9,94 @@
 
 use embedded_graphics::geometry::Size;
 
+use crate::check::valid;
 use crate::error::{CameraProblem, Error};
 use crate::geometry::plane::Plane;
+use crate::geometry::shape::Shape;
 use crate::geometry::sphere::Sphere;
 use crate::numbers::fx::Fx;
 use crate::numbers::vec3::Vec3;
 use crate::render::camera::Camera;
-use crate::scene::Scene;
 use crate::scene::background::Background;
 use crate::scene::colour::Rgb;
 use crate::scene::light::Light;
 use crate::scene::material::Material;
+use crate::scene::{Object, Scene};
 
 /// Sky blue, where rays miss.
 pub const BACKGROUND: Rgb = Rgb::new(51, 178, 204);
 
-/// The demo scene: ground plane y = −4 facing up; spheres at (−3, 0, −16) r 2,
-/// (−1, −1.5, −12) r 2, (1.5, −0.5, −18) r 3 and (7, 5, −18) r 4; a point light at
-/// (−20, 20, 20) of intensity 0.8 and ambient 0.2.
-#[must_use]
-pub fn scene() -> Scene<8> {
-    let fx = Fx::from_num::<f32>;
-    let light = Light::new_unchecked(Vec3::from_ints(-20, 20, 20), fx(0.8));
-    let mut scene = match Scene::new(light, fx(0.2), BACKGROUND) {
-        Ok(s) => s,
-        Err(_) => unreachable!("0.2 is a valid ambient term"),
+/// `tenths / 10` in Q16.16, rounded to nearest: the scenes' decimal values, in a `const`.
+const fn tenths(tenths: i32) -> Fx {
+    let scaled = tenths as i64 * 65_536;
+    Fx::from_bits(((scaled + scaled.signum() * 5) / 10) as i32)
+}
+
+/// A point from coordinates in tenths.
+const fn point(x: i32, y: i32, z: i32) -> Vec3 {
+    Vec3::new(tenths(x), tenths(y), tenths(z))
+}
+
+/// The sphere centres and radii both scenes share, in tenths: tinyraytracer's four.
+const SPHERES: [(Vec3, i32); 4] = [
+    (point(-30, 0, -160), 20),
+    (point(-10, -15, -120), 20),
+    (point(15, -5, -180), 30),
+    (point(70, 50, -180), 40),
+];
+
+/// The ground both scenes stand on: y = −4, facing up.
+const GROUND: Plane = valid(Plane::from_fx(Vec3::from_ints(0, -4, 0), Vec3::Y));
+
+/// A scene of capacity `N` with `light` and its objects added, each checked by the compiler.
+const fn scene_with<const N: usize>(
+    light: Light,
+    ambient: Fx,
+    background: Background,
+    objects: &[Object],
+) -> Scene<N> {
+    let mut scene = match Scene::from_fx(light, ambient, background) {
+        Ok(scene) => scene,
+        Err(_) => panic!("the demo scenes' values are in range"),
     };
-    let spheres = [
-        (Vec3::from_ints(-3, 0, -16), 2.0, Rgb::new(230, 220, 180)), // ivory
-        (
-            Vec3::new(fx(-1.0), fx(-1.5), fx(-12.0)),
-            2.0,
-            Rgb::new(90, 140, 230),
-        ), // blue
-        (
-            Vec3::new(fx(1.5), fx(-0.5), fx(-18.0)),
-            3.0,
-            Rgb::new(200, 50, 40),
-        ), // red
-        (Vec3::from_ints(7, 5, -18), 4.0, Rgb::new(210, 210, 215)),  // silver
-    ];
-    let ground = Plane::new_unchecked(Vec3::from_ints(0, -4, 0), Vec3::Y);
-    // Eight slots, five objects: these pushes cannot fail.
-    let _ = scene.add_plane(ground, Rgb::new(120, 150, 90));
-    for (centre, radius, colour) in spheres {
-        let _ = scene.add_sphere(Sphere::new_unchecked(centre, fx(radius)), colour);
+    let mut i = 0;
+    while i < objects.len() {
+        valid(scene.add(objects[i]));
+        i += 1;
     }
     scene
+}
+
+/// A sphere of [`SPHERES`] made of `material`.
+const fn sphere(index: usize, material: Material) -> Object {
+    let (centre, radius) = SPHERES[index];
+    Object::new(
+        Shape::Sphere(valid(Sphere::from_fx(centre, tenths(radius)))),
+        material,
+    )
+}
+
+/// The demo scene: ground plane y = −4 facing up; spheres at (−3, 0, −16) r 2,
+/// (−1, −1.5, −12) r 2, (1.5, −0.5, −18) r 3 and (7, 5, −18) r 4; a point light at
+/// (−20, 20, 20) of intensity 0.8 and ambient 0.2. Built at compile time, so it can be a
+/// `static`.
+#[must_use]
+pub const fn scene() -> Scene<8> {
+    const fn matte(r: u8, g: u8, b: u8) -> Material {
+        Material::matte(Rgb::new(r, g, b))
+    }
+    scene_with(
+        valid(Light::from_fx(Vec3::from_ints(-20, 20, 20), tenths(8))),
+        tenths(2),
+        Background::plain(BACKGROUND),
+        &[
+            Object::new(Shape::Plane(GROUND), matte(120, 150, 90)),
+            sphere(0, matte(230, 220, 180)), // ivory
+            sphere(1, matte(90, 140, 230)),  // blue
+            sphere(2, matte(200, 50, 40)),   // red
+            sphere(3, matte(210, 210, 215)), // silver
+        ],
+    )
 }
 
 /// Screen height of the demo camera (world units), 2 units at distance √3: 60° vertically.
@@ -84,57 +125,51 @@ pub fn camera(width: u32, height: u32) -> Result<Camera, Error> {
 /// fixray does not refract, so the glass sphere is a faint mirror with a sharp highlight and
 /// a little diffuse light in place of tinyraytracer's transparency.
 #[must_use]
-pub fn classic() -> Scene<8> {
-    let fx = Fx::from_num::<f32>;
+pub const fn classic() -> Scene<8> {
+    const fn material(
+        colour: Rgb,
+        diffuse: i32,
+        specular: i32,
+        shininess: u16,
+        reflect: i32,
+    ) -> Material {
+        valid(Material::from_fx(
+            colour,
+            tenths(diffuse),
+            tenths(specular),
+            shininess,
+            tenths(reflect),
+        ))
+    }
+    const fn light(x: i16, y: i16, z: i16, intensity: i32) -> Light {
+        valid(Light::from_fx(Vec3::from_ints(x, y, z), tenths(intensity)))
+    }
+    let floor = valid(GROUND.bounded_fx(
+        [Fx::const_from_int(-10), Fx::const_from_int(-30)],
+        [Fx::const_from_int(10), Fx::const_from_int(-10)],
+    ));
+    let floor_material = valid(
+        Material::matte(Rgb::new(77, 77, 77))
+            .with_checker_fx(Fx::const_from_int(2), Rgb::new(77, 51, 26)),
+    );
     let sky = Background {
         top: Rgb::new(20, 90, 170),
         bottom: Rgb::new(51, 178, 204),
     };
-    let lights = [
-        Light::new_unchecked(Vec3::from_ints(-20, 20, 20), fx(1.5)),
-        Light::new_unchecked(Vec3::from_ints(30, 50, -25), fx(1.8)),
-        Light::new_unchecked(Vec3::from_ints(30, 20, 30), fx(1.7)),
-    ];
-    let mut scene = match Scene::new(lights[0], Fx::ZERO, sky) {
-        Ok(s) => s,
-        Err(_) => unreachable!("zero is a valid ambient term"),
-    };
-    // Three lights in a scene of capacity four, five objects in eight: these cannot fail.
-    let _ = scene.add_light(lights[1]);
-    let _ = scene.add_light(lights[2]);
-    let material = |colour, diffuse, specular, shininess, reflect| Material {
-        colour,
-        diffuse: fx(diffuse),
-        specular: fx(specular),
-        shininess,
-        reflect: fx(reflect),
-        checker: None,
-    };
-    let ivory = material(Rgb::new(102, 102, 77), 0.6, 0.3, 50, 0.1);
-    let glass = material(Rgb::new(153, 179, 204), 0.1, 0.5, 125, 0.3);
-    let rubber = material(Rgb::new(77, 26, 26), 0.9, 0.1, 10, 0.0);
-    let mirror = material(Rgb::WHITE, 0.0, 10.0, 1425, 0.8);
-    let floor_material = Material {
-        checker: Some(crate::scene::material::Checker {
-            size: fx(2.0),
-            other: Rgb::new(77, 51, 26),
-        }),
-        ..Material::matte(Rgb::new(77, 77, 77))
-    };
-    let floor = Plane::new_unchecked(Vec3::from_ints(0, -4, 0), Vec3::Y)
-        .bounded([fx(-10.0), fx(-30.0)], [fx(10.0), fx(-10.0)]);
-    if let Ok(floor) = floor {
-        let _ = scene.add_plane(floor, floor_material);
-    }
-    let spheres = [
-        (Vec3::from_ints(-3, 0, -16), 2.0, ivory),
-        (Vec3::new(fx(-1.0), fx(-1.5), fx(-12.0)), 2.0, glass),
-        (Vec3::new(fx(1.5), fx(-0.5), fx(-18.0)), 3.0, rubber),
-        (Vec3::from_ints(7, 5, -18), 4.0, mirror),
-    ];
-    for (centre, radius, m) in spheres {
-        let _ = scene.add_sphere(Sphere::new_unchecked(centre, fx(radius)), m);
-    }
+    let mut scene = scene_with(
+        light(-20, 20, 20, 15),
+        Fx::ZERO,
+        sky,
+        &[
+            Object::new(Shape::Plane(floor), floor_material),
+            sphere(0, material(Rgb::new(102, 102, 77), 6, 3, 50, 1)), // ivory
+            sphere(1, material(Rgb::new(153, 179, 204), 1, 5, 125, 3)), // glass
+            sphere(2, material(Rgb::new(77, 26, 26), 9, 1, 10, 0)),   // red rubber
+            sphere(3, material(Rgb::WHITE, 0, 100, 1425, 8)),         // mirror
+        ],
+    );
+    valid(scene.add_light(light(30, 50, -25, 18)));
+    valid(scene.add_light(light(30, 20, 30, 17)));
     scene
 }
 

@@ -354,14 +354,3 @@ impl fmt::Display for Error {
 }
 
 impl core::error::Error for Error {}
-
-/// Refuses a value outside `min ..= max` with [`Error::OutOfRange`] naming `quantity`: the
-/// one range check behind every checked constructor.
-pub(crate) const fn within(value: Fx, min: Fx, max: Fx, quantity: Quantity) -> Result<Fx, Error> {
-    // Raw comparisons, so that `const` constructors can use it.
-    if value.to_bits() < min.to_bits() || value.to_bits() > max.to_bits() {
-        Err(Error::OutOfRange { quantity, min, max })
-    } else {
-        Ok(value)
-    }
-}

@@ -71,6 +71,7 @@
 #![forbid(unsafe_code)]
 #![deny(missing_docs, rustdoc::broken_intra_doc_links)]
 
+mod check;
 #[cfg(feature = "demo")]
 pub mod demo;
 pub mod draw;
@@ -92,7 +93,7 @@ pub use error::{CameraProblem, Error, Quantity};
 pub use framebuffer::Framebuffer;
 pub use geometry::{Hit, Plane, Ray, Shape, Sphere};
 pub use hash::FrameHash;
-pub use numbers::{FAR, Fx, LIMIT, Vec3, fx_from_f32, mul};
+pub use numbers::{FAR, Fx, LIMIT, Vec3};
 // Not stable API: the integer square root the geometry uses, for tests; hidden from the docs.
 #[doc(hidden)]
 pub use numbers::isqrt;
@@ -100,7 +101,7 @@ pub use render::{
     Camera, LookAt, MAX_PIXELS, Orbit, Pinhole, RowRays, render, render_row,
     render_row_supersampled, shoot_row, shoot_row_skipping,
 };
-pub use scene::{Background, Checker, Light, Material, Object, Rgb, Scene};
+pub use scene::{Background, Checker, Light, Material, Object, Rgb, Scene, SceneHit};
 
 /// The README's Rust examples, compiled and run as doc tests.
 #[cfg(doctest)]

@@ -8,7 +8,7 @@
 
 use core::fmt::Debug;
 
-use fixray::{Camera, Error, Fx, Material, Object, Rgb, Scene, demo};
+use fixray::{Camera, Error, Fx, Material, Rgb, Scene, demo};
 use fixray_reference::{self as reference, DCamera, DScene, Real};
 
 /// Columns of the frame (its width).
@@ -100,24 +100,20 @@ impl Variant {
 /// during the set-up, and not in the frame that renders.
 #[inline(never)]
 fn without_mirrors(scene: &Scene<8>) -> Result<Scene<8>, Error> {
-    let [first, others @ ..] = scene.lights() else {
-        unreachable!("a scene has at least one light");
-    };
-    let mut out = Scene::new(*first, scene.ambient(), scene.background())?;
-    for light in others {
-        out.add_light(*light)?;
-    }
-    out.set_shadows(scene.shadows());
-    out.set_depth(scene.depth());
-    for object in scene.objects() {
-        let material = Material {
-            reflect: Fx::ZERO,
-            ..object.material
-        };
-        out.add(Object {
-            material,
-            ..*object
-        })?;
+    let mut out = scene.clone();
+    for (index, object) in scene.objects().iter().enumerate() {
+        let m = object.material;
+        let mut matte = Material::from_fx(
+            m.colour(),
+            m.diffuse(),
+            m.specular(),
+            m.shininess(),
+            Fx::ZERO,
+        )?;
+        if let Some(checker) = m.checker() {
+            matte = matte.with_checker_fx(checker.size(), checker.other())?;
+        }
+        out.set_material(index, matte)?;
     }
     Ok(out)
 }
@@ -217,7 +213,7 @@ impl Renderer for FixedRays {
             while col < first {
                 let Some(ray) = rays.next() else { break };
                 if let Some(pixel) = out.get_mut(col as usize) {
-                    let dir = ray.dir;
+                    let dir = ray.dir();
                     *pixel = Rgb::new(
                         dir.x.to_bits() as u8,
                         dir.y.to_bits() as u8,
@@ -271,8 +267,8 @@ impl Renderer for FixedShoot {
             },
             |col, _, hit| {
                 if let (Some(pixel), Some(hit)) = (out.get_mut(col as usize), hit) {
-                    let t = hit.t.to_bits();
-                    *pixel = Rgb::new(hit.object as u8, (t >> 8) as u8, t as u8);
+                    let t = hit.t().to_bits();
+                    *pixel = Rgb::new(hit.object() as u8, (t >> 8) as u8, t as u8);
                 } else if let Some(pixel) = out.get_mut(col as usize) {
                     *pixel = Rgb::BLACK;
                 }

@@ -17,15 +17,15 @@ fn f<F: Real>(x: Fx) -> F {
 
 impl<F: Real> From<fixray::Light> for DLight<F> {
     fn from(light: fixray::Light) -> Self {
-        DLight::new(light.position.into(), f(light.intensity))
+        DLight::new(light.position().into(), f(light.intensity()))
     }
 }
 
 impl<F: Real> From<fixray::Checker> for DChecker<F> {
     fn from(checker: fixray::Checker) -> Self {
         DChecker {
-            size: f(checker.size),
-            other: checker.other,
+            size: f(checker.size()),
+            other: checker.other(),
         }
     }
 }
@@ -33,12 +33,12 @@ impl<F: Real> From<fixray::Checker> for DChecker<F> {
 impl<F: Real> From<fixray::Material> for DMaterial<F> {
     fn from(m: fixray::Material) -> Self {
         DMaterial {
-            colour: m.colour,
-            diffuse: f(m.diffuse),
-            specular: f(m.specular),
-            shininess: m.shininess,
-            reflect: f(m.reflect),
-            checker: m.checker.map(DChecker::from),
+            colour: m.colour(),
+            diffuse: f(m.diffuse()),
+            specular: f(m.specular()),
+            shininess: m.shininess(),
+            reflect: f(m.reflect()),
+            checker: m.checker().map(DChecker::from),
         }
     }
 }

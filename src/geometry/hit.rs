@@ -3,35 +3,47 @@
 use crate::numbers::fx::Fx;
 use crate::numbers::vec3::Vec3;
 
-/// The first point where a ray meets a surface.
+/// The first point where a ray meets a shape.
 ///
-/// The fields are public: a hit built by hand, with a normal that is not a unit vector or an
-/// object index past the scene's last, may be handed to
-/// [`Scene::shade`](crate::Scene::shade), which saturates instead of overflowing (and shades
-/// an index past the last object as a miss).
+/// The normal is the surface's unit normal on the side the ray came from (`n·u_r ≤ 0`): a
+/// plane is two-sided, and a sphere seen from outside has its outward normal, seen from inside
+/// its inward one. Shading, shadows and mirrors all work on that side of the surface.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Hit {
-    /// Distance along the ray, `t ≥ 0`.
-    pub t: Fx,
-    /// The hit point `x = p_r + t·u_r`.
-    pub point: Vec3,
-    /// The unit surface normal at `point`, on the side the ray came from for planes and
-    /// pointing outward for spheres.
-    pub normal: Vec3,
-    /// Index of the object in its [`Scene`](crate::Scene); the pure intersection functions
-    /// leave it 0 and [`Scene::shoot`](crate::Scene::shoot) fills it in.
-    pub object: usize,
+    pub(crate) t: Fx,
+    pub(crate) point: Vec3,
+    pub(crate) normal: Vec3,
 }
 
 impl Hit {
-    /// This hit with each component of its normal clamped to ±2 (see `Ray::bounded`): what
-    /// [`Scene::shade`](crate::Scene::shade) works on when a caller built the hit by hand.
+    /// The hit at distance `t` on a surface of unit normal `normal` (either side) at `point`,
+    /// seen along `dir`: the normal is turned to face the ray.
     #[inline]
+    pub(crate) fn facing(t: Fx, point: Vec3, normal: Vec3, dir: Vec3) -> Hit {
+        // Both are unit vectors: the exact sum cannot overflow.
+        let normal = if normal.dot_wide_exact(dir) > 0 {
+            -normal
+        } else {
+            normal
+        };
+        Hit { t, point, normal }
+    }
+
+    /// Distance along the ray, `t ≥ 0`.
     #[must_use]
-    pub(crate) const fn bounded(&self) -> Hit {
-        Hit {
-            normal: self.normal.clamp_raw(crate::geometry::ray::BOUND),
-            ..*self
-        }
+    pub const fn t(&self) -> Fx {
+        self.t
+    }
+
+    /// The hit point `x = p_r + t·u_r`.
+    #[must_use]
+    pub const fn point(&self) -> Vec3 {
+        self.point
+    }
+
+    /// The unit surface normal at the point, on the side the ray came from.
+    #[must_use]
+    pub const fn normal(&self) -> Vec3 {
+        self.normal
     }
 }

@@ -1,5 +1,6 @@
 //! [`Plane`] and ray–plane intersection (section 4.3, Eq. 4.2).
 
+use crate::check;
 use crate::error::{Error, Quantity};
 use crate::geometry::hit::Hit;
 use crate::geometry::ray::Ray;
@@ -17,27 +18,41 @@ pub struct Plane {
 }
 
 impl Plane {
-    /// A plane through `point` facing `normal` (normalised here).
+    /// A plane through `point` facing `normal` (normalised here), checked: the point within
+    /// ±[`LIMIT`](crate::LIMIT), the normal not zero.
     ///
     /// ```
     /// use fixray::{Error, Plane, Quantity, Vec3};
-    /// let ground = Plane::new(Vec3::from_ints(0, -4, 0), Vec3::from_ints(0, 3, 0)).unwrap();
+    /// let ground = Plane::new([0.0, -4.0, 0.0], [0.0, 3.0, 0.0])?;
     /// assert_eq!(ground.normal(), Vec3::Y);
     /// assert_eq!(
-    ///     Plane::new(Vec3::ZERO, Vec3::ZERO),
+    ///     Plane::new([0.0; 3], [0.0; 3]),
     ///     Err(Error::ZeroVector { quantity: Quantity::PlaneNormal })
     /// );
+    /// # Ok::<(), Error>(())
     /// ```
-    pub fn new(point: Vec3, normal: Vec3) -> Result<Self, Error> {
-        let point = point.check_range(Quantity::PlanePoint)?;
-        let normal = normal.try_normalize().ok_or(Error::ZeroVector {
-            quantity: Quantity::PlaneNormal,
-        })?;
-        Ok(Plane {
-            point,
-            normal,
-            bounds: None,
-        })
+    pub fn new(point: [f32; 3], normal: [f32; 3]) -> Result<Self, Error> {
+        Plane::from_fx(
+            check::f32_point(point, Quantity::PlanePoint)?,
+            check::f32_point(normal, Quantity::PlaneNormal)?,
+        )
+    }
+
+    /// [`Plane::new`] in fixed point, for `const` and `static` scenes: the same checks, at
+    /// compile time when the values are constants.
+    pub const fn from_fx(point: Vec3, normal: Vec3) -> Result<Self, Error> {
+        let point = match check::point(point, Quantity::PlanePoint) {
+            Ok(point) => point,
+            Err(e) => return Err(e),
+        };
+        match check::direction(normal, Quantity::PlaneNormal) {
+            Ok(normal) => Ok(Plane {
+                point,
+                normal,
+                bounds: None,
+            }),
+            Err(e) => Err(e),
+        }
     }
 
     /// The same plane cut down to the rectangle `min ≤ (u, v) ≤ max` in its own coordinates
@@ -47,30 +62,47 @@ impl Plane {
     /// below `max` on both axes ([`Error::EmptyBounds`]).
     ///
     /// ```
-    /// use fixray::{Error, Fx, Plane, Ray, Vec3};
-    /// let fx = Fx::from_num::<i32>;
+    /// use fixray::{Error, Plane, Ray, Vec3};
     /// // The classic floor: y = −4 for |x| < 10 and −30 < z < −10.
-    /// let floor = Plane::new(Vec3::from_ints(0, -4, 0), Vec3::Y).unwrap()
-    ///     .bounded([fx(-10), fx(-30)], [fx(10), fx(-10)]).unwrap();
+    /// let floor = Plane::new([0.0, -4.0, 0.0], [0.0, 1.0, 0.0])?
+    ///     .bounded([-10.0, -30.0], [10.0, -10.0])?;
     /// let down = |z: i16| Ray::new(Vec3::from_ints(0, 0, z), -Vec3::Y).unwrap();
     /// assert!(floor.intersect(&down(-20)).is_some());
     /// assert!(floor.intersect(&down(-5)).is_none());
     /// // A strip of no width encloses nothing.
     /// assert_eq!(
-    ///     Plane::new(Vec3::ZERO, Vec3::Y).unwrap().bounded([fx(0), fx(0)], [fx(0), fx(1)]),
+    ///     Plane::new([0.0; 3], [0.0, 1.0, 0.0])?.bounded([0.0, 0.0], [0.0, 1.0]),
     ///     Err(Error::EmptyBounds)
     /// );
+    /// # Ok::<(), Error>(())
     /// ```
-    pub fn bounded(self, min: [Fx; 2], max: [Fx; 2]) -> Result<Self, Error> {
-        for c in min.iter().chain(&max) {
-            crate::numbers::fx::check_range(*c, Quantity::PlaneBounds)?;
+    pub fn bounded(self, min: [f32; 2], max: [f32; 2]) -> Result<Self, Error> {
+        let corner = |c: [f32; 2]| -> Result<[Fx; 2], Error> {
+            Ok([
+                check::f32_coordinate(c[0], Quantity::PlaneBounds)?,
+                check::f32_coordinate(c[1], Quantity::PlaneBounds)?,
+            ])
+        };
+        self.bounded_fx(corner(min)?, corner(max)?)
+    }
+
+    /// [`Plane::bounded`] in fixed point, for `const` and `static` scenes.
+    pub const fn bounded_fx(self, min: [Fx; 2], max: [Fx; 2]) -> Result<Self, Error> {
+        let corners = [min[0], min[1], max[0], max[1]];
+        let mut i = 0;
+        while i < 4 {
+            if let Err(e) = check::coordinate(corners[i], Quantity::PlaneBounds) {
+                return Err(e);
+            }
+            i += 1;
         }
-        if min[0] >= max[0] || min[1] >= max[1] {
+        if min[0].to_bits() >= max[0].to_bits() || min[1].to_bits() >= max[1].to_bits() {
             return Err(Error::EmptyBounds);
         }
         Ok(Plane {
             bounds: Some([min, max]),
-            ..self
+            point: self.point,
+            normal: self.normal,
         })
     }
 
@@ -97,33 +129,6 @@ impl Plane {
     #[must_use]
     pub const fn bounds(&self) -> Option<[[Fx; 2]; 2]> {
         self.bounds
-    }
-
-    /// A plane whose values the caller promises are valid: `point` within ±1024 and `normal`
-    /// a unit vector. For `const` scenes.
-    ///
-    /// A debug build asserts the promise. A release build clamps the point to ±1024 and each
-    /// component of the normal to ±1, so that a broken promise draws a wrong plane rather than
-    /// overflowing in the render path.
-    #[must_use]
-    pub const fn new_unchecked(point: Vec3, normal: Vec3) -> Self {
-        let limit = crate::LIMIT.to_bits();
-        debug_assert!(
-            point.within_raw(limit),
-            "Plane::new_unchecked: the point must lie within ±1024"
-        );
-        debug_assert!(
-            crate::geometry::ray::is_unit(normal),
-            "Plane::new_unchecked: the normal must be a unit vector"
-        );
-        // Clamped, a broken promise still keeps Eq. 4.2's products and the far-clip test
-        // inside 64 bits: a wrong plane, not an overflow.
-        let (point, normal) = (point.clamp_raw(limit), normal.clamp_raw(1 << 16));
-        Plane {
-            point,
-            normal,
-            bounds: None,
-        }
     }
 
     /// The point `p0` the plane passes through.
@@ -155,15 +160,15 @@ impl Plane {
     /// rectangle.
     ///
     /// ```
-    /// use fixray::{Fx, Plane, Ray, Vec3};
+    /// use fixray::{Plane, Ray, Vec3};
     /// // The chapter's wall whose front face is at x = 4, and its ray from (1, 1) along +x.
-    /// let wall = Plane::new(Vec3::from_ints(4, 0, 0), Vec3::from_ints(-1, 0, 0)).unwrap();
-    /// let ray = Ray::new(Vec3::from_ints(1, 1, 0), Vec3::X).unwrap();
-    /// let hit = wall.intersect(&ray).unwrap();
-    /// assert_eq!(hit.t, Fx::from_num(3));
-    /// assert_eq!(hit.point, Vec3::from_ints(4, 1, 0));
+    /// let wall = Plane::new([4.0, 0.0, 0.0], [-1.0, 0.0, 0.0])?;
+    /// let hit = wall.intersect(&Ray::new(Vec3::from_ints(1, 1, 0), Vec3::X)?).unwrap();
+    /// assert_eq!(hit.t(), 3);
+    /// assert_eq!(hit.point(), Vec3::from_ints(4, 1, 0));
     /// // A ray parallel to the wall misses.
-    /// assert!(wall.intersect(&Ray::new(Vec3::ZERO, Vec3::Y).unwrap()).is_none());
+    /// assert!(wall.intersect(&Ray::new(Vec3::ZERO, Vec3::Y)?).is_none());
+    /// # Ok::<(), fixray::Error>(())
     /// ```
     #[must_use]
     pub fn intersect(&self, ray: &Ray) -> Option<Hit> {
@@ -172,8 +177,7 @@ impl Plane {
     }
 
     /// The `t` of [`Plane::intersect`] alone, without the hit's normal.
-    #[must_use]
-    pub fn hit_distance(&self, ray: &Ray) -> Option<Fx> {
+    pub(crate) fn hit_distance(&self, ray: &Ray) -> Option<Fx> {
         self.hit_distance_from(ray, self.numerator(ray.origin))
     }
 
@@ -209,19 +213,8 @@ impl Plane {
     }
 
     /// The hit at distance `t` along `ray`, its normal facing the ray.
-    #[must_use]
-    pub fn hit_at(&self, ray: &Ray, t: Fx) -> Hit {
-        let normal = if self.normal.dot_wide_exact(ray.dir) < 0 {
-            self.normal
-        } else {
-            -self.normal
-        };
-        Hit {
-            t,
-            point: ray.at_hit(t),
-            normal,
-            object: 0,
-        }
+    pub(crate) fn hit_at(&self, ray: &Ray, t: Fx) -> Hit {
+        Hit::facing(t, ray.at_hit(t), self.normal, ray.dir)
     }
 }
 

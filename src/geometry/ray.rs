@@ -1,23 +1,19 @@
 //! [`Ray`]: the chapter's ray `x(t) = p_r + t·u_r` (Eq. 4.1).
 
+use crate::check;
 use crate::error::{Error, Quantity};
 use crate::numbers::fx::Fx;
 use crate::numbers::vec3::Vec3;
 
 /// A ray: an origination point `p_r` and a unit direction `u_r`.
 ///
-/// Every point on the ray is `x(t) = p_r + t·u_r` for a distance `t ≥ 0` (Eq. 4.1).
-///
-/// The fields are public, so a ray built by hand may hold any origin and a direction that is
-/// not a unit vector. Every function that takes a ray still returns without overflow for it
-/// (products and sums saturate), but its answers are those for a unit direction only when it
-/// has one: build rays with [`Ray::new`] for the documented results.
+/// Every point on the ray is `x(t) = p_r + t·u_r` for a distance `t ≥ 0` (Eq. 4.1). The
+/// origin lies within ±[`LIMIT`](crate::LIMIT) and the direction is a unit vector, as
+/// [`Ray::new`] and the [`Camera`](crate::Camera) make them.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Ray {
-    /// The origination point `p_r`.
-    pub origin: Vec3,
-    /// The unit direction `u_r`.
-    pub dir: Vec3,
+    pub(crate) origin: Vec3,
+    pub(crate) dir: Vec3,
 }
 
 impl Ray {
@@ -29,15 +25,30 @@ impl Ray {
     /// use fixray::{Fx, Ray, Vec3};
     /// // The chapter's example: from (1, 1) along +x.
     /// let ray = Ray::new(Vec3::from_ints(1, 1, 0), Vec3::from_ints(5, 0, 0)).unwrap();
-    /// assert_eq!(ray.dir, Vec3::X);
+    /// assert_eq!(ray.dir(), Vec3::X);
     /// assert_eq!(ray.at(Fx::from_num(3)), Vec3::from_ints(4, 1, 0));
     /// ```
-    pub fn new(origin: Vec3, dir: Vec3) -> Result<Self, Error> {
-        let origin = origin.check_range(Quantity::RayOrigin)?;
-        let dir = dir.try_normalize().ok_or(Error::ZeroVector {
-            quantity: Quantity::RayDirection,
-        })?;
-        Ok(Ray { origin, dir })
+    pub const fn new(origin: Vec3, dir: Vec3) -> Result<Self, Error> {
+        let origin = match check::point(origin, Quantity::RayOrigin) {
+            Ok(origin) => origin,
+            Err(e) => return Err(e),
+        };
+        match check::direction(dir, Quantity::RayDirection) {
+            Ok(dir) => Ok(Ray { origin, dir }),
+            Err(e) => Err(e),
+        }
+    }
+
+    /// The origination point `p_r`.
+    #[must_use]
+    pub const fn origin(&self) -> Vec3 {
+        self.origin
+    }
+
+    /// The unit direction `u_r`.
+    #[must_use]
+    pub const fn dir(&self) -> Vec3 {
+        self.dir
     }
 
     /// A ray whose direction the caller promises is already a unit vector, as
@@ -45,7 +56,7 @@ impl Ray {
     /// builds check that promise.
     #[inline]
     #[must_use]
-    pub const fn new_unchecked(origin: Vec3, dir: Vec3) -> Self {
+    pub(crate) const fn new_unchecked(origin: Vec3, dir: Vec3) -> Self {
         debug_assert!(
             is_unit(dir),
             "Ray::new_unchecked: the direction is not a unit vector"
@@ -67,26 +78,7 @@ impl Ray {
     pub(crate) fn at_hit(&self, t: Fx) -> Vec3 {
         self.origin + self.dir.scale_unit(t)
     }
-
-    /// This ray with each component of its direction clamped to ±2.
-    ///
-    /// The render path's products take one side to be a unit vector, as every ray fixray makes
-    /// has. A public function that takes a caller's ray, whose fields are public, works on it
-    /// bounded so: a unit direction is unchanged, bit for bit, and a hand-built longer one
-    /// keeps every product inside 64 bits (its results are then not the documented ones, but
-    /// nothing overflows).
-    #[inline]
-    #[must_use]
-    pub(crate) const fn bounded(&self) -> Ray {
-        Ray {
-            origin: self.origin,
-            dir: self.dir.clamp_raw(BOUND),
-        }
-    }
 }
-
-/// ±2 in raw units: a unit vector's components, rounded, are within ±(1 + 2⁻¹⁶).
-pub(crate) const BOUND: i32 = 1 << 17;
 
 /// Whether `dir` has length 1 within the rounding of [`Vec3::try_normalize`]: each component
 /// within a unit of 2⁻¹⁶ of exact puts the squared length within 2⁻¹⁴ of 1; 2⁻¹² leaves room.

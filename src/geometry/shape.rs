@@ -23,26 +23,32 @@ impl Shape {
         Some(self.hit_at(ray, t))
     }
 
-    /// The distance `t` to the first hit alone.
-    #[must_use]
-    pub fn hit_distance(&self, ray: &Ray) -> Option<Fx> {
-        self.hit_distance_bounded(&ray.bounded())
-    }
-
-    /// [`Shape::hit_distance`] for a bounded ray (see `Ray::bounded`): the render path's form.
-    pub(crate) fn hit_distance_bounded(&self, ray: &Ray) -> Option<Fx> {
+    /// The distance `t` to the first hit alone: what finding the nearest object and testing
+    /// shadow rays need.
+    pub(crate) fn hit_distance(&self, ray: &Ray) -> Option<Fx> {
         match self {
             Shape::Plane(p) => p.hit_distance(ray),
-            Shape::Sphere(s) => s.hit_distance_bounded(ray),
+            Shape::Sphere(s) => s.hit_distance(ray),
         }
     }
 
-    /// The hit at distance `t` along `ray`.
-    #[must_use]
-    pub fn hit_at(&self, ray: &Ray, t: Fx) -> Hit {
+    /// The hit at distance `t` along `ray`: the point and normal, for the nearest object only.
+    pub(crate) fn hit_at(&self, ray: &Ray, t: Fx) -> Hit {
         match self {
             Shape::Plane(p) => p.hit_at(ray, t),
             Shape::Sphere(s) => s.hit_at(ray, t),
         }
+    }
+}
+
+impl From<Sphere> for Shape {
+    fn from(sphere: Sphere) -> Self {
+        Shape::Sphere(sphere)
+    }
+}
+
+impl From<Plane> for Shape {
+    fn from(plane: Plane) -> Self {
+        Shape::Plane(plane)
     }
 }

@@ -2,6 +2,7 @@
 
 use core::cmp::Ordering;
 
+use crate::check;
 use crate::error::{Error, Quantity};
 use crate::geometry::hit::Hit;
 use crate::geometry::ray::Ray;
@@ -34,50 +35,53 @@ pub struct Sphere {
 }
 
 impl Sphere {
-    /// A sphere, checked: the radius must be positive and at most [`LIMIT`](crate::LIMIT), the centre within
-    /// ±`LIMIT`.
+    /// A sphere of centre `centre` and radius `radius`, checked: the centre within
+    /// ±[`LIMIT`](crate::LIMIT), the radius positive and at most `LIMIT` (one that rounds to
+    /// zero in Q16.16 is not positive).
     ///
     /// ```
-    /// use fixray::{Error, Fx, Sphere, Vec3};
-    /// assert!(Sphere::new(Vec3::from_ints(-3, 0, -16), Fx::from_num(2)).is_ok());
-    /// assert_eq!(
-    ///     Sphere::new(Vec3::ZERO, Fx::ZERO),
-    ///     Err(Error::NonPositiveRadius)
-    /// );
+    /// use fixray::{Error, Sphere};
+    /// let ball = Sphere::new([-3.0, 0.0, -16.0], 2.0)?;
+    /// assert_eq!(ball.radius(), 2.0);
+    /// assert_eq!(Sphere::new([0.0; 3], 0.0), Err(Error::NonPositiveRadius));
+    /// # Ok::<(), Error>(())
     /// ```
-    pub fn new(centre: Vec3, radius: Fx) -> Result<Self, Error> {
-        let centre = centre.check_range(Quantity::SphereCentre)?;
-        if radius <= Fx::ZERO {
+    pub fn new(centre: [f32; 3], radius: f32) -> Result<Self, Error> {
+        let centre = check::f32_point(centre, Quantity::SphereCentre)?;
+        if radius.is_finite() && radius <= 0.0 {
             return Err(Error::NonPositiveRadius);
         }
-        fx::check_range(radius, Quantity::SphereRadius)?;
-        Ok(Sphere::new_unchecked(centre, radius))
+        Sphere::from_fx(
+            centre,
+            check::f32_coordinate(radius, Quantity::SphereRadius)?,
+        )
     }
 
-    /// A sphere whose values the caller promises are valid (`0 < radius ≤ 1024`, centre
-    /// within ±1024). For `const` scenes.
+    /// [`Sphere::new`] in fixed point, for `const` and `static` scenes: the same checks, at
+    /// compile time when the values are constants.
     ///
-    /// A debug build asserts the promise. A release build clamps values outside it into
-    /// range (the radius to `[2⁻¹⁶, 1024]`, each coordinate of the centre to ±1024), so that a
-    /// broken promise draws a wrong sphere rather than overflowing in the render path.
-    #[must_use]
-    pub const fn new_unchecked(centre: Vec3, radius: Fx) -> Self {
-        let limit = crate::LIMIT.to_bits();
-        debug_assert!(
-            radius.to_bits() > 0 && radius.to_bits() <= limit,
-            "Sphere::new_unchecked: the radius must lie in (0, 1024]"
-        );
-        debug_assert!(
-            centre.within_raw(limit),
-            "Sphere::new_unchecked: the centre must lie within ±1024"
-        );
-        let centre = centre.clamp_raw(limit);
-        let radius = Fx::from_bits(fx::clamp_raw(radius.to_bits(), 1, limit));
+    /// ```
+    /// use fixray::{Fx, Sphere, Vec3};
+    /// const BALL: Result<Sphere, fixray::Error> =
+    ///     Sphere::from_fx(Vec3::from_ints(-3, 0, -16), Fx::const_from_int(2));
+    /// assert_eq!(BALL, Sphere::new([-3.0, 0.0, -16.0], 2.0));
+    /// ```
+    pub const fn from_fx(centre: Vec3, radius: Fx) -> Result<Self, Error> {
+        let centre = match check::point(centre, Quantity::SphereCentre) {
+            Ok(centre) => centre,
+            Err(e) => return Err(e),
+        };
+        if radius.to_bits() <= 0 {
+            return Err(Error::NonPositiveRadius);
+        }
+        if let Err(e) = check::coordinate(radius, Quantity::SphereRadius) {
+            return Err(e);
+        }
         // r in raw units lies in [2^k, 2^(k+1)); 2^(31+k)/r then lies in (2³⁰, 2³¹].
         let r = radius.to_bits() as u64;
         let k = 63 - r.leading_zeros();
         let inv = (1u64 << (31 + k)) / r;
-        Sphere {
+        Ok(Sphere {
             centre,
             radius,
             inv_radius: if inv > i32::MAX as u64 {
@@ -86,8 +90,14 @@ impl Sphere {
                 inv as i32
             },
             inv_shift: k,
-        }
+        })
     }
+
+    /// The unit sphere at the origin.
+    pub(crate) const UNIT: Sphere = match Sphere::from_fx(Vec3::ZERO, Fx::ONE) {
+        Ok(sphere) => sphere,
+        Err(_) => panic!("the unit sphere is valid"),
+    };
 
     /// The centre `c`.
     #[must_use]
@@ -121,11 +131,14 @@ impl Sphere {
     ///
     /// ```
     /// use fixray::{Fx, Ray, Sphere, Vec3};
-    /// let ball = Sphere::new(Vec3::from_ints(0, 0, -10), Fx::from_num(2)).unwrap();
-    /// let ray = Ray::new(Vec3::ZERO, -Vec3::Z).unwrap();
-    /// let hit = ball.intersect(&ray).unwrap();
-    /// assert_eq!(hit.t, Fx::from_num(8));
-    /// assert_eq!(hit.normal, Vec3::Z);
+    /// let ball = Sphere::new([0.0, 0.0, -10.0], 2.0)?;
+    /// let hit = ball.intersect(&Ray::new(Vec3::ZERO, -Vec3::Z)?).unwrap();
+    /// assert_eq!(hit.t(), 8);
+    /// assert_eq!(hit.normal(), Vec3::Z);
+    /// // From inside, the ray leaves through the far side, whose normal faces back at it.
+    /// let inside = ball.intersect(&Ray::new(Vec3::from_ints(0, 0, -10), -Vec3::Z)?).unwrap();
+    /// assert_eq!((inside.t(), inside.normal()), (Fx::from_num(2), Vec3::Z));
+    /// # Ok::<(), fixray::Error>(())
     /// ```
     #[must_use]
     pub fn intersect(&self, ray: &Ray) -> Option<Hit> {
@@ -135,14 +148,7 @@ impl Sphere {
 
     /// The `t` of [`Sphere::intersect`] alone, without the hit point and normal: what the
     /// scene needs to find the nearest object and to test shadow rays.
-    #[must_use]
-    pub fn hit_distance(&self, ray: &Ray) -> Option<Fx> {
-        self.hit_distance_bounded(&ray.bounded())
-    }
-
-    /// [`Sphere::hit_distance`] for a ray whose direction is bounded (see `Ray::bounded`), as
-    /// every ray fixray makes itself is: the render path's form.
-    pub(crate) fn hit_distance_bounded(&self, ray: &Ray) -> Option<Fx> {
+    pub(crate) fn hit_distance(&self, ray: &Ray) -> Option<Fx> {
         let to_centre = self.centre - ray.origin;
         let t_close = ray.dir.dot_exact(to_centre);
         if t_close < -self.radius {
@@ -196,22 +202,15 @@ impl Sphere {
         }
     }
 
-    /// The hit at distance `t` along `ray`: its point and outward normal.
-    #[must_use]
-    pub fn hit_at(&self, ray: &Ray, t: Fx) -> Hit {
+    /// The hit at distance `t` along `ray`: its point, and its normal facing the ray.
+    pub(crate) fn hit_at(&self, ray: &Ray, t: Fx) -> Hit {
         let point = ray.at_hit(t);
-        Hit {
-            t,
-            point,
-            normal: self.normal_at(point),
-            object: 0,
-        }
+        Hit::facing(t, point, self.outward_normal(point), ray.dir)
     }
 
     /// The outward unit normal `(x − c) / r` at a point `x` on the surface, as a
     /// multiplication by the reciprocal radius kept since construction.
-    #[must_use]
-    pub fn normal_at(&self, x: Vec3) -> Vec3 {
+    pub(crate) fn outward_normal(&self, x: Vec3) -> Vec3 {
         let shift = FRAC - 1 + self.inv_shift; // (v·2^(31+k)/r) / 2^(15+k) = v·2¹⁶/r
         let scale = |c: Fx| {
             let q = fx::mul_shift_round(c.to_bits(), self.inv_radius, shift);

@@ -6,8 +6,6 @@
 //! result is scaled back, so every product here widens to `i64` first ("Q32.32"), and dot
 //! products add their three terms at that width before a single rounding.
 
-use crate::error::{Error, Quantity, within};
-
 /// The renderer's scalar: a signed Q16.16 fixed-point number.
 pub type Fx = fixed::types::I16F16;
 
@@ -189,19 +187,6 @@ const fn bit_length_u32(mut x: u32) -> u32 {
     n + NIBBLE[x as usize] as u32
 }
 
-/// `x` clamped to `[low, high]`, for `const` constructors (`Ord::clamp` is not `const`).
-#[inline]
-#[must_use]
-pub(crate) const fn clamp_raw(x: i32, low: i32, high: i32) -> i32 {
-    if x < low {
-        low
-    } else if x > high {
-        high
-    } else {
-        x
-    }
-}
-
 /// A Q32.32 raw value rounded (half up) back to Q16.16, saturating at the ends of the range.
 #[inline]
 #[must_use]
@@ -280,51 +265,6 @@ pub(crate) const fn mul_unit(t: Fx, u: Fx) -> Fx {
     let (t, u) = (clamp(t.to_bits(), 30), clamp(u.to_bits(), 17));
     // |t · u| < 2⁴⁷: the rounded quotient by 2¹⁶ fits 32 bits.
     Fx::from_bits(((wide_mul(t, u) + (1 << (FRAC - 1))) >> FRAC) as i32)
-}
-
-/// Converts an `f32` to [`Fx`], refusing NaN, infinities and values outside ±[`LIMIT`].
-///
-/// `quantity` names the value in the error.
-///
-/// ```
-/// use fixray::{fx_from_f32, Error, Fx, LIMIT, Quantity};
-/// assert_eq!(fx_from_f32(-3.25, Quantity::SphereRadius), Ok(Fx::from_num(-3.25)));
-/// assert_eq!(
-///     fx_from_f32(2000.0, Quantity::SphereRadius),
-///     Err(Error::OutOfRange { quantity: Quantity::SphereRadius, min: -LIMIT, max: LIMIT })
-/// );
-/// ```
-pub fn fx_from_f32(value: f32, quantity: Quantity) -> Result<Fx, Error> {
-    fx_from_f32_within(value, -LIMIT, LIMIT, quantity)
-}
-
-/// Converts an `f32` to [`Fx`], refusing NaN and infinities ([`Error::NotFinite`]) and values
-/// that round to outside `min ..= max` ([`Error::OutOfRange`]).
-///
-/// The bounds (within ±2¹⁴) apply to the rounded value, as every later check sees it: a tiny
-/// positive value that rounds to zero is below a `min` of [`Fx::DELTA`].
-pub(crate) fn fx_from_f32_within(
-    value: f32,
-    min: Fx,
-    max: Fx,
-    quantity: Quantity,
-) -> Result<Fx, Error> {
-    if !value.is_finite() {
-        return Err(Error::NotFinite { quantity });
-    }
-    // Values beyond ±2¹⁴ are past every range fixray checks (bounds are within ±1024) and
-    // refused before they could overflow the conversion. Below that every f32 converts, and
-    // the bounds are checked on the rounded value.
-    const BEYOND: f32 = 16_384.0;
-    if !(value > -BEYOND && value < BEYOND) {
-        return Err(Error::OutOfRange { quantity, min, max });
-    }
-    within(Fx::from_num(value), min, max, quantity)
-}
-
-/// Refuses an [`Fx`] outside ±[`LIMIT`].
-pub(crate) const fn check_range(value: Fx, quantity: Quantity) -> Result<Fx, Error> {
-    within(value, Fx::from_bits(-LIMIT.to_bits()), LIMIT, quantity)
 }
 
 #[cfg(test)]
@@ -441,49 +381,5 @@ mod tests {
             let want = exact.clamp(i32::MIN as i128, i32::MAX as i128) as i32;
             assert_eq!(narrow(wide).to_bits(), want, "{wide}");
         }
-    }
-
-    #[test]
-    fn f32_conversion_is_checked() {
-        let q = Quantity::LightPosition;
-        let outside = Err(Error::OutOfRange {
-            quantity: q,
-            min: -LIMIT,
-            max: LIMIT,
-        });
-        assert_eq!(
-            fx_from_f32(f32::NAN, q),
-            Err(Error::NotFinite { quantity: q })
-        );
-        assert_eq!(
-            fx_from_f32(f32::NEG_INFINITY, q),
-            Err(Error::NotFinite { quantity: q })
-        );
-        assert_eq!(fx_from_f32(1024.5, q), outside);
-        // The next f32 past the limit, and one far past it that Q16.16 cannot hold.
-        assert_eq!(
-            fx_from_f32(f32::from_bits(1024f32.to_bits() + 1), q),
-            outside
-        );
-        assert_eq!(fx_from_f32(-1e30, q), outside);
-        assert_eq!(fx_from_f32(1024.0, q), Ok(Fx::from_num(1024)));
-        assert_eq!(fx_from_f32(-1024.0, q), Ok(Fx::from_num(-1024)));
-    }
-
-    #[test]
-    fn f32_bounds_apply_to_the_rounded_value() {
-        let q = Quantity::ScreenDistance;
-        let positive = |v: f32| fx_from_f32_within(v, Fx::DELTA, LIMIT, q);
-        let below = Err(Error::OutOfRange {
-            quantity: q,
-            min: Fx::DELTA,
-            max: LIMIT,
-        });
-        // 0.6 of a step rounds up to one step; 0.4 of a step rounds to zero.
-        assert_eq!(positive(0.6 / 65_536.0), Ok(Fx::DELTA));
-        assert_eq!(positive(0.4 / 65_536.0), below);
-        assert_eq!(positive(0.0), below);
-        assert_eq!(positive(-2.0), below);
-        assert_eq!(positive(1e9), below);
     }
 }

@@ -22,7 +22,7 @@ use crate::numbers::reciprocal::rsqrt;
 /// assert_eq!(fixray::isqrt(u64::MAX), u32::MAX as u64);
 /// ```
 #[must_use]
-pub fn isqrt(x: u64) -> u64 {
+pub const fn isqrt(x: u64) -> u64 {
     if x < 2 {
         return x;
     }
@@ -32,15 +32,19 @@ pub fn isqrt(x: u64) -> u64 {
     let p = 2 * half;
     let m = top_word(x, p);
     let mut r = wide_mul_u32(m, y) >> (62 - half);
-    // r² by a 32 × 32 product; from r = 2³² up it exceeds every u64.
-    let square = |r: u64| (r >> 32 == 0).then(|| wide_mul_u32(r as u32, r as u32));
-    while square(r).is_none_or(|s| s > x) {
+    while !square_at_most(r, x) {
         r -= 1;
     }
-    while square(r + 1).is_some_and(|s| s <= x) {
+    while square_at_most(r + 1, x) {
         r += 1;
     }
     r
+}
+
+/// Whether `r² ≤ x`: `r²` by a 32 × 32 product, and from `r = 2³²` up it exceeds every `u64`.
+#[inline]
+const fn square_at_most(r: u64, x: u64) -> bool {
+    r >> 32 == 0 && wide_mul_u32(r as u32, r as u32) <= x
 }
 
 #[cfg(test)]

@@ -8,6 +8,6 @@ pub(crate) mod isqrt;
 pub(crate) mod reciprocal;
 pub(crate) mod vec3;
 
-pub use fx::{FAR, Fx, LIMIT, fx_from_f32, mul};
+pub use fx::{FAR, Fx, LIMIT};
 pub use isqrt::isqrt;
 pub use vec3::Vec3;

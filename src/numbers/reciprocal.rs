@@ -30,7 +30,7 @@ const RSQRT_SEEDS: [u16; 192] = {
 /// `1/√μ` to about 0.4 %, and two Newton steps `y ← y·(3 − μ·y²)/2` bring it to about 2⁻²⁸
 /// relative. `y` lies in `(2³⁰, 2³¹)`. Every product is 32 × 32 → 64 bits.
 #[must_use]
-pub(crate) fn rsqrt(s: u64) -> (u32, u32) {
+pub(crate) const fn rsqrt(s: u64) -> (u32, u32) {
     // 0 has no reciprocal root, and no bit for the table to be indexed by.
     debug_assert!(s >= 1, "rsqrt: zero argument");
     // s < 2^p with p even, and s ≥ 2^(p−2).
@@ -39,13 +39,22 @@ pub(crate) fn rsqrt(s: u64) -> (u32, u32) {
     let m = top_word(s, p);
     let seed = RSQRT_SEEDS[((m >> 24) - 64) as usize] as u32;
     let mut y = seed << 16; // Q2.30
-    for _ in 0..2 {
+    let mut step = 0;
+    while step < 2 {
+        step += 1;
         let y2 = (wide_mul_u32(y, y) >> 30) as u32; // Q2.30, ≤ 4.1 · 2³⁰ fits
         let my2 = (wide_mul_u32(m, y2) >> 32) as u32; // μ·y², near 1 in Q2.30
         let factor = (3u32 << 30).wrapping_sub(my2); // 3 − μ·y², near 2, in Q2.30
         y = (wide_mul_u32(y, factor) >> 31) as u32;
     }
-    (y.min(i32::MAX as u32), p / 2)
+    (
+        if y > i32::MAX as u32 {
+            i32::MAX as u32
+        } else {
+            y
+        },
+        p / 2,
+    )
 }
 
 // Division by a reciprocal.

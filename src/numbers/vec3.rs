@@ -2,7 +2,6 @@
 
 use core::ops::{Add, Neg, Sub};
 
-use crate::error::{Error, Quantity};
 use crate::numbers::fx::{self, Fx};
 use crate::numbers::isqrt::isqrt;
 use crate::numbers::reciprocal::rsqrt;
@@ -56,45 +55,9 @@ impl Vec3 {
         )
     }
 
-    /// A vector from `f32` components, each checked to be finite and within ±[`LIMIT`](crate::LIMIT).
-    ///
-    /// `quantity` names the vector in the error.
-    ///
-    /// ```
-    /// use fixray::{Error, Quantity, Vec3};
-    /// assert!(Vec3::from_f32([1.5, -4.0, -16.0], Quantity::SphereCentre).is_ok());
-    /// assert_eq!(
-    ///     Vec3::from_f32([f32::NAN, 0.0, 0.0], Quantity::SphereCentre),
-    ///     Err(Error::NotFinite { quantity: Quantity::SphereCentre })
-    /// );
-    /// ```
-    pub fn from_f32(v: [f32; 3], quantity: Quantity) -> Result<Self, Error> {
-        Ok(Vec3::new(
-            fx::fx_from_f32(v[0], quantity)?,
-            fx::fx_from_f32(v[1], quantity)?,
-            fx::fx_from_f32(v[2], quantity)?,
-        ))
-    }
-
-    /// Checks that every component lies within ±[`LIMIT`](crate::LIMIT), else
-    /// [`Error::OutOfRange`] naming `quantity`.
-    pub const fn check_range(self, quantity: Quantity) -> Result<Self, Error> {
-        // `?` is not allowed in a `const fn`.
-        if let Err(e) = fx::check_range(self.x, quantity) {
-            return Err(e);
-        }
-        if let Err(e) = fx::check_range(self.y, quantity) {
-            return Err(e);
-        }
-        if let Err(e) = fx::check_range(self.z, quantity) {
-            return Err(e);
-        }
-        Ok(self)
-    }
-
-    /// The components as `f64`, for comparisons with the reference model.
-    #[must_use]
-    pub fn to_f64(self) -> [f64; 3] {
+    /// The components as `f64`, for the tests' exact comparisons.
+    #[cfg(test)]
+    pub(crate) fn to_f64(self) -> [f64; 3] {
         [self.x.to_num(), self.y.to_num(), self.z.to_num()]
     }
 
@@ -188,12 +151,14 @@ impl Vec3 {
             + fx::wide_mul(self.z.to_bits(), o.z.to_bits())
     }
 
-    /// Each raw component clamped to `±bound`.
-    pub(crate) const fn clamp_raw(self, bound: i32) -> Vec3 {
-        const fn c(v: Fx, bound: i32) -> Fx {
-            Fx::from_bits(fx::clamp_raw(v.to_bits(), -bound, bound))
-        }
-        Vec3::new(c(self.x, bound), c(self.y, bound), c(self.z, bound))
+    /// `self − o`, each component saturating: `-` in a `const fn`.
+    #[inline]
+    pub(crate) const fn saturating_sub(self, o: Vec3) -> Vec3 {
+        Vec3::new(
+            self.x.saturating_sub(o.x),
+            self.y.saturating_sub(o.y),
+            self.z.saturating_sub(o.z),
+        )
     }
 
     /// Whether every raw component lies within `±bound`.
@@ -262,7 +227,7 @@ impl Vec3 {
     /// ‖self‖, truncated to Q16.16: `isqrt` of the exact Q32.32 square.
     #[inline]
     #[must_use]
-    pub fn length(self) -> Fx {
+    pub const fn length(self) -> Fx {
         let root = isqrt(self.length_squared_wide());
         // The root is below √3 · 2³¹; above i32::MAX it saturates.
         if root > i32::MAX as u64 {
@@ -285,14 +250,14 @@ impl Vec3 {
     /// assert_eq!(tiny.try_normalize(), Some(Vec3::new(Fx::ZERO, Fx::from_num(0.6), Fx::from_num(-0.8))));
     /// ```
     #[must_use]
-    pub fn try_normalize(self) -> Option<Vec3> {
+    pub const fn try_normalize(self) -> Option<Vec3> {
         self.normalize_with_square(self.length_squared_wide())
     }
 
     /// [`Vec3::try_normalize`] given `square`, which must be `self.length_squared_wide()`:
     /// for callers that have it already, or can keep it up to date for less.
     #[inline]
-    pub(crate) fn normalize_with_square(self, square: u64) -> Option<Vec3> {
+    pub(crate) const fn normalize_with_square(self, square: u64) -> Option<Vec3> {
         debug_assert!(
             square == self.length_squared_wide(),
             "normalize_with_square: square is not the vector's squared length"
@@ -304,8 +269,14 @@ impl Vec3 {
         let (y, shift) = rsqrt(square);
         let shift = 14 + shift;
         // |c| ≤ ‖self‖ and y·‖self‖ ≈ 2^(30 + shift − 14): each result is at most 2¹⁶ and a bit.
-        let scale = |c: Fx| Fx::from_bits(fx::mul_shift_round(c.to_bits(), y as i32, shift) as i32);
-        Some(Vec3::new(scale(self.x), scale(self.y), scale(self.z)))
+        const fn scale(c: Fx, y: u32, shift: u32) -> Fx {
+            Fx::from_bits(fx::mul_shift_round(c.to_bits(), y as i32, shift) as i32)
+        }
+        Some(Vec3::new(
+            scale(self.x, y, shift),
+            scale(self.y, y, shift),
+            scale(self.z, y, shift),
+        ))
     }
 
     /// The unit vector along `self`, or the zero vector when `self` is zero.
@@ -331,11 +302,7 @@ impl Sub for Vec3 {
     type Output = Vec3;
     #[inline]
     fn sub(self, o: Vec3) -> Vec3 {
-        Vec3::new(
-            self.x.saturating_sub(o.x),
-            self.y.saturating_sub(o.y),
-            self.z.saturating_sub(o.z),
-        )
+        self.saturating_sub(o)
     }
 }
 
@@ -356,7 +323,7 @@ mod tests {
     use super::*;
 
     fn v(x: f32, y: f32, z: f32) -> Vec3 {
-        Vec3::from_f32([x, y, z], Quantity::RayOrigin).unwrap()
+        Vec3::new(Fx::from_num(x), Fx::from_num(y), Fx::from_num(z))
     }
 
     #[test]

@@ -2,13 +2,13 @@
 
 use crate::error::Error;
 use crate::framebuffer::Framebuffer;
-use crate::geometry::hit::Hit;
 use crate::geometry::ray::Ray;
 use crate::render::accel::row_rays::RowSquares;
 use crate::render::accel::runs::Runs;
 use crate::render::camera::Camera;
 use crate::scene::Scene;
 use crate::scene::colour::Rgb;
+use crate::scene::hit::SceneHit;
 
 /// Renders display row `y` (0 at the top) into `out`, one colour per column.
 ///
@@ -48,7 +48,7 @@ pub fn render_row<const N: usize, const L: usize>(
         |first, end, cast| match cast {
             Some((ray, hit)) => {
                 if let Some(pixel) = out.get_mut(first as usize) {
-                    *pixel = scene.shade_bounded(ray, hit);
+                    *pixel = crate::scene::linear::to_rgb(scene.radiance(ray, hit));
                 }
             }
             None => {
@@ -89,7 +89,7 @@ pub fn shoot_row<const N: usize, const L: usize>(
     scene: &Scene<N, L>,
     camera: &Camera,
     y: u32,
-    mut each: impl FnMut(u32, &Ray, Option<Hit>),
+    mut each: impl FnMut(u32, &Ray, Option<SceneHit>),
 ) -> Result<(), Error> {
     let row = camera.check_row(y)?;
     cast_row(scene, camera, row, false, |col, _, cast| {
@@ -121,7 +121,7 @@ pub fn shoot_row_skipping<const N: usize, const L: usize>(
     camera: &Camera,
     y: u32,
     mut empty: impl FnMut(core::ops::Range<u32>),
-    mut each: impl FnMut(u32, &Ray, Option<Hit>),
+    mut each: impl FnMut(u32, &Ray, Option<SceneHit>),
 ) -> Result<(), Error> {
     let row = camera.check_row(y)?;
     cast_row(scene, camera, row, true, |first, end, cast| match cast {
@@ -142,7 +142,7 @@ fn cast_row<const N: usize, const L: usize>(
     camera: &Camera,
     row: u16,
     skip_empty: bool,
-    mut each: impl FnMut(u16, u16, Option<(&Ray, Option<Hit>)>),
+    mut each: impl FnMut(u16, u16, Option<(&Ray, Option<SceneHit>)>),
 ) {
     let mut runs = Runs::new(scene, camera, row);
     while let Some((first, end, here)) = runs.next_run() {

@@ -5,10 +5,10 @@
 //! for one ray. `render_row` finds the same pixels for a whole row for less (see `accel`),
 //! bit for bit.
 
-use crate::geometry::hit::Hit;
 use crate::geometry::ray::Ray;
 use crate::numbers::fx::{self, Fx};
 use crate::numbers::vec3::Vec3;
+use crate::scene::hit::SceneHit;
 use crate::scene::light::Light;
 use crate::scene::linear::{Linear, channel_to_linear, powi};
 use crate::scene::{Object, Rgb, Scene};
@@ -23,8 +23,8 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// Shoots `ray` into the scene and returns the nearest hit; on a tie the object added
     /// first wins.
     #[must_use]
-    pub fn shoot(&self, ray: &Ray) -> Option<Hit> {
-        self.shoot_from(&ray.bounded(), None)
+    pub fn shoot(&self, ray: &Ray) -> Option<SceneHit> {
+        self.shoot_from(ray, None)
     }
 
     /// [`Scene::shoot`], ignoring the object the ray leaves from.
@@ -34,12 +34,12 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// offset along the normal. That is exact, where an offset in Q16.16 would have to be
     /// larger than the hit point's rounding (which grows with distance) and would detach
     /// shadows from the objects that cast them.
-    pub(crate) fn shoot_from(&self, ray: &Ray, leaving: Option<usize>) -> Option<Hit> {
+    pub(crate) fn shoot_from(&self, ray: &Ray, leaving: Option<usize>) -> Option<SceneHit> {
         // Hits lie within FAR, so any hit is nearer than MAX; on a tie the first object wins.
         let (mut best, mut nearest) = (Fx::MAX, usize::MAX);
         for (index, object) in self.objects().iter().enumerate() {
             if Some(index) != leaving
-                && let Some(t) = object.shape.hit_distance_bounded(ray)
+                && let Some(t) = object.shape.hit_distance(ray)
                 && t < best
             {
                 (best, nearest) = (t, index);
@@ -47,27 +47,15 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         }
         // Distances first; the hit point and normal only for the nearest.
         let hit = self.objects().get(nearest)?.shape.hit_at(ray, best);
-        Some(Hit {
-            object: nearest,
-            ..hit
-        })
+        Some(SceneHit::new(hit, nearest))
     }
 
-    /// The colour seen along `ray` when it has this first hit: the background for a miss,
-    /// otherwise the lit surface plus what its mirror shows (see [`Material`](crate::Material)).
-    ///
-    /// `hit` is meant to come from [`Scene::shoot`], but it may be built by hand: a normal
-    /// that is not a unit vector saturates the arithmetic instead of overflowing it, and an
-    /// object index past the last shades as a miss.
+    /// The colour seen along `ray` when it has this first hit (from [`Scene::shoot`]): the
+    /// background for a miss, otherwise the lit surface plus what its mirror shows (see
+    /// [`Material`](crate::Material)).
     #[must_use]
-    pub fn shade(&self, ray: &Ray, hit: Option<&Hit>) -> Rgb {
-        self.shade_bounded(&ray.bounded(), hit.map(Hit::bounded))
-    }
-
-    /// [`Scene::shade`] for a bounded ray and hit (see `Ray::bounded`), as the render path's
-    /// own are.
-    pub(crate) fn shade_bounded(&self, ray: &Ray, hit: Option<Hit>) -> Rgb {
-        crate::scene::linear::to_rgb(self.radiance(ray, hit))
+    pub fn shade(&self, ray: &Ray, hit: Option<&SceneHit>) -> Rgb {
+        crate::scene::linear::to_rgb(self.radiance(ray, hit.copied()))
     }
 
     /// The light arriving along `ray`, whose first hit is `hit`, in linear units.
@@ -75,33 +63,25 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// Mirrors are followed in a loop, not by recursion: each bounce adds its surface's light
     /// times the product of the reflectivities so far, and the ray that leaves the last
     /// allowed bounce sees the background. The stack stays the same size at any depth.
-    pub(crate) fn radiance(&self, ray: &Ray, hit: Option<Hit>) -> Linear {
+    pub(crate) fn radiance(&self, ray: &Ray, hit: Option<SceneHit>) -> Linear {
         let Some((h, object)) = hit.and_then(|h| Some((h, self.objects().get(h.object)?))) else {
             return self.background().along(ray.dir);
         };
         // The first surface has weight 1: its light is the sum so far, exactly.
-        let normal = facing(h.normal, ray.dir);
-        let light = self.local(object, &h, normal, ray.dir);
+        let light = self.local(object, &h, ray.dir);
         if object.material.reflect == Fx::ZERO {
             return light;
         }
-        self.reflections(light, ray.dir, &h, normal, object.material.reflect)
+        self.reflections(light, ray.dir, &h, object.material.reflect)
     }
 
     /// [`Scene::radiance`] past a first surface that mirrors: `sum` is that surface's own
     /// light, and the bounces are followed from it. Kept apart so that the common matte pixel
     /// does not pay for the loop's set-up.
     #[inline(never)]
-    fn reflections(
-        &self,
-        mut sum: Linear,
-        dir: Vec3,
-        first: &Hit,
-        normal: Vec3,
-        reflect: Fx,
-    ) -> Linear {
+    fn reflections(&self, mut sum: Linear, dir: Vec3, first: &SceneHit, reflect: Fx) -> Linear {
         let mut weight = fx::mul(Fx::ONE, reflect);
-        let Some(bounced) = mirror(dir, normal) else {
+        let Some(bounced) = mirror(dir, first.normal) else {
             add(&mut sum, weight, self.background().along(dir));
             return sum;
         };
@@ -120,14 +100,13 @@ impl<const N: usize, const L: usize> Scene<N, L> {
                 add(&mut sum, weight, self.background().along(ray.dir));
                 return sum;
             };
-            let normal = facing(h.normal, ray.dir);
-            add(&mut sum, weight, self.local(object, &h, normal, ray.dir));
+            add(&mut sum, weight, self.local(object, &h, ray.dir));
             let reflect = object.material.reflect;
             if reflect == Fx::ZERO {
                 return sum;
             }
             weight = fx::mul(weight, reflect);
-            let Some(bounced) = mirror(ray.dir, normal) else {
+            let Some(bounced) = mirror(ray.dir, h.normal) else {
                 add(&mut sum, weight, self.background().along(ray.dir));
                 return sum;
             };
@@ -138,8 +117,8 @@ impl<const N: usize, const L: usize> Scene<N, L> {
 
     /// The surface's own light at a hit: ambient and diffuse times its colour, plus white
     /// highlights, from every light whose shadow ray reaches it.
-    fn local(&self, object: &Object, hit: &Hit, normal: Vec3, dir: Vec3) -> Linear {
-        let material = &object.material;
+    fn local(&self, object: &Object, hit: &SceneHit, dir: Vec3) -> Linear {
+        let (material, normal) = (&object.material, hit.normal);
         let (mut diffuse, mut specular) = (Fx::ZERO, Fx::ZERO);
         let mut light_up = |index: usize, light: &Light| {
             let to_light = light.position - hit.point;
@@ -175,8 +154,8 @@ impl<const N: usize, const L: usize> Scene<N, L> {
                 }
             }
         }
-        // Materials and lights have public fields, so weights outside their checked ranges can
-        // reach here: the sums saturate rather than wrap.
+        // Several lights and a specular weight up to 16 can exceed Q16.16's range: the sums
+        // saturate rather than wrap.
         let k = self
             .ambient()
             .saturating_add(fx::mul(material.diffuse, diffuse));
@@ -202,7 +181,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         light: usize,
     ) -> bool {
         let blocks = |object: &Object| {
-            object.shape.hit_distance_bounded(ray).is_some_and(|t| {
+            object.shape.hit_distance(ray).is_some_and(|t| {
                 let t = t.to_bits() as u32;
                 fx::wide_mul_u32(t, t) < distance_squared
             })
@@ -231,25 +210,10 @@ fn add(sum: &mut Linear, weight: Fx, c: Linear) {
     }
 }
 
-/// The normal turned to face against the ray, so that a sphere seen from inside and a plane
-/// seen from behind are lit on the side the ray is on.
-///
-/// Both vectors are bounded (each component within ±2): the render path's own are unit
-/// vectors, and [`Scene::shade`] bounds a caller's hand-built ray and hit (`Ray::bounded`), so
-/// the exact sum cannot overflow.
-fn facing(normal: Vec3, dir: Vec3) -> Vec3 {
-    if normal.dot_wide_exact(dir) > 0 {
-        -normal
-    } else {
-        normal
-    }
-}
-
 /// The mirror direction `d − 2(d·n)n`, renormalised; `None` where it has no direction.
 ///
-/// For unit `d` and `n` it is never zero (it has the length of `d`). A hand-built [`Hit`] or
-/// [`Ray`] can make it so, or make its terms saturate: every step saturates, and a mirror
-/// direction of zero length sees the background, as an escaping ray does.
+/// For unit `d` and `n` it is never zero (it has the length of `d`); should rounding ever make
+/// it so, the mirror sees the background, as an escaping ray does.
 fn mirror(dir: Vec3, normal: Vec3) -> Option<Vec3> {
     let along = normal.scale(dir.dot(normal).saturating_mul_int(2));
     (dir - along).try_normalize()

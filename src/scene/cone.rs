@@ -37,43 +37,38 @@ impl ShadowCone {
     /// 2⁻¹⁰: far wider than the few units of 2⁻¹⁶ that directions and lengths are off.
     const MARGIN: Fx = Fx::from_bits(1 << 6);
 
-    /// The cone of `shape` seen from a light at `light`.
-    pub(crate) fn new(light: Vec3, shape: &Shape) -> ShadowCone {
+    /// The cone of `shape` seen from a light at `light` (`const`, for `static` scenes).
+    pub(crate) const fn new(light: Vec3, shape: &Shape) -> ShadowCone {
         let Shape::Sphere(sphere) = shape else {
             return ShadowCone::ALWAYS;
         };
-        // Lights (public fields) and spheres (`new_unchecked`) can hold values outside their
-        // documented ranges; the cone is only a shortcut, so for those the shadow test is
-        // always made, and none of the arithmetic below meets them.
-        let limit = crate::LIMIT.to_bits();
-        let radius = sphere.radius();
-        if !light.within_raw(limit)
-            || !sphere.centre().within_raw(limit)
-            || radius <= Fx::ZERO
-            || radius > crate::LIMIT
-        {
-            return ShadowCone::ALWAYS;
-        }
-        let to_centre = sphere.centre() - light;
-        let distance = to_centre.length();
+        // Raw units throughout: `Fx`'s operators cannot run in a `const fn`. Lights and
+        // spheres are checked to lie within ±1024, so the differences below cannot saturate.
+        let radius = sphere.radius().to_bits() as i64;
+        let to_centre = sphere.centre().saturating_sub(light);
+        let distance = to_centre.length().to_bits() as i64;
         let Some(axis) = to_centre.try_normalize() else {
             return ShadowCone::ALWAYS;
         };
-        if distance <= radius + ShadowCone::MARGIN * 4 {
+        let margin = ShadowCone::MARGIN.to_bits() as i64;
+        if distance <= radius + margin * 4 {
             return ShadowCone::ALWAYS;
         }
         // cos α = √(D² − r²) / D.
-        let (d, r) = (distance.to_bits() as i64, radius.to_bits() as i64);
-        let root = isqrt((d * d - r * r) as u64) as i64;
-        let cos = Fx::from_bits(((root << 16) / d) as i32) - ShadowCone::MARGIN;
-        let q14 = |c: Fx| (c.to_bits() >> 2) as i16; // |c| ≤ 1: fits Q2.14
+        let root = isqrt((distance * distance - radius * radius) as u64) as i64;
+        let cos = (root << 16) / distance - margin;
+        let near = {
+            let near = distance - radius - margin;
+            if near > 0 { near as u64 } else { 0 }
+        };
         ShadowCone {
-            axis: [q14(axis.x), q14(axis.y), q14(axis.z)],
-            cos: q14(cos),
-            near_squared: {
-                let near = (distance - radius - ShadowCone::MARGIN).max(Fx::ZERO);
-                near.to_bits() as u64 * near.to_bits() as u64
-            },
+            axis: [
+                q14(axis.x.to_bits()),
+                q14(axis.y.to_bits()),
+                q14(axis.z.to_bits()),
+            ],
+            cos: q14(cos as i32),
+            near_squared: near * near,
         }
     }
 
@@ -92,6 +87,11 @@ impl ShadowCone {
         let dot = c(dir.x, self.axis[0]) + c(dir.y, self.axis[1]) + c(dir.z, self.axis[2]);
         -dot >= (self.cos as i32) << 14
     }
+}
+
+/// A raw Q16.16 value of magnitude at most 1, in Q2.14.
+const fn q14(raw: i32) -> i16 {
+    (raw >> 2) as i16
 }
 
 #[cfg(test)]

@@ -1,6 +1,7 @@
 //! [`Material`]: how a surface answers light, and [`Checker`], a two-colour pattern.
 
-use crate::error::{Error, Quantity, within};
+use crate::check;
+use crate::error::{Error, Quantity};
 use crate::numbers::fx::Fx;
 use crate::scene::colour::Rgb;
 
@@ -17,23 +18,15 @@ const MAX_SHININESS: u16 = 4096;
 /// and the pixel is `local + reflect · (what the mirror ray sees)`, each channel clamped to
 /// 0..=255 at the end. `colour` counts 0..=255 as 0..=1.
 ///
-/// [`Material::new`] checks the ranges below. The fields are public, so a material built by
-/// hand may hold any value: shading then saturates every weighted sum instead of wrapping,
-/// and a weight outside its range gives a colour clamped to 0..=255, not a panic.
+/// [`Material::new`] checks the ranges below.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Material {
-    /// The surface colour under full white light.
-    pub colour: Rgb,
-    /// Weight of the diffuse (Lambert) term, 0 to 2.
-    pub diffuse: Fx,
-    /// Weight of the specular (Blinn-Phong) highlight, 0 to 16.
-    pub specular: Fx,
-    /// Specular exponent, 1 to 4096: larger is a smaller, sharper highlight.
-    pub shininess: u16,
-    /// Share of the mirror image added, 0 to 1.
-    pub reflect: Fx,
-    /// A checkerboard that alternates `colour` with another colour, for planes.
-    pub checker: Option<Checker>,
+    pub(crate) colour: Rgb,
+    pub(crate) diffuse: Fx,
+    pub(crate) specular: Fx,
+    pub(crate) shininess: u16,
+    pub(crate) reflect: Fx,
+    pub(crate) checker: Option<Checker>,
 }
 
 impl Material {
@@ -50,32 +43,61 @@ impl Material {
         }
     }
 
-    /// A material, checked against the ranges above.
+    /// A material, checked: `diffuse` 0 to 2, `specular` 0 to 16, `shininess` 1 to 4096,
+    /// `reflect` 0 to 1.
     ///
     /// ```
     /// use fixray::{Error, Fx, Material, Quantity, Rgb};
-    /// let ivory = Material::new(Rgb::new(102, 102, 77), Fx::from_num(0.6), Fx::from_num(0.3), 50, Fx::from_num(0.1));
-    /// assert!(ivory.is_ok());
-    /// let bad = Material::new(Rgb::WHITE, Fx::ONE, Fx::ZERO, 0, Fx::ZERO);
+    /// let ivory = Material::new(Rgb::new(102, 102, 77), 0.6, 0.3, 50, 0.1)?;
+    /// assert_eq!(ivory.shininess(), 50);
     /// assert_eq!(
-    ///     bad,
+    ///     Material::new(Rgb::WHITE, 1.0, 0.0, 0, 0.0),
     ///     Err(Error::OutOfRange { quantity: Quantity::Shininess, min: Fx::ONE, max: Fx::from_num(4096) })
     /// );
+    /// # Ok::<(), Error>(())
     /// ```
     pub fn new(
+        colour: Rgb,
+        diffuse: f32,
+        specular: f32,
+        shininess: u16,
+        reflect: f32,
+    ) -> Result<Self, Error> {
+        let weight = |value, max, quantity| check::f32_within(value, Fx::ZERO, max, quantity);
+        Material::from_fx(
+            colour,
+            weight(diffuse, MAX_DIFFUSE, Quantity::DiffuseWeight)?,
+            weight(specular, MAX_SPECULAR, Quantity::SpecularWeight)?,
+            shininess,
+            weight(reflect, Fx::ONE, Quantity::Reflectivity)?,
+        )
+    }
+
+    /// [`Material::new`] in fixed point, for `const` and `static` scenes: the same checks, at
+    /// compile time when the values are constants.
+    pub const fn from_fx(
         colour: Rgb,
         diffuse: Fx,
         specular: Fx,
         shininess: u16,
         reflect: Fx,
     ) -> Result<Self, Error> {
-        let weight = |value, max, quantity| within(value, Fx::ZERO, max, quantity);
-        weight(diffuse, Fx::const_from_int(2), Quantity::DiffuseWeight)?;
-        weight(specular, Fx::const_from_int(16), Quantity::SpecularWeight)?;
-        weight(reflect, Fx::ONE, Quantity::Reflectivity)?;
+        let weights = [
+            (diffuse, MAX_DIFFUSE, Quantity::DiffuseWeight),
+            (specular, MAX_SPECULAR, Quantity::SpecularWeight),
+            (reflect, Fx::ONE, Quantity::Reflectivity),
+        ];
+        let mut i = 0;
+        while i < weights.len() {
+            let (value, max, quantity) = weights[i];
+            if let Err(e) = check::within(value, Fx::ZERO, max, quantity) {
+                return Err(e);
+            }
+            i += 1;
+        }
         // A u16 may exceed Q16.16's 32 767, so the exponent is compared as an integer; its
         // bounds, 1 and 4096, are whole Q16.16 values for the error.
-        if !(1..=MAX_SHININESS).contains(&shininess) {
+        if shininess < 1 || shininess > MAX_SHININESS {
             return Err(Error::OutOfRange {
                 quantity: Quantity::Shininess,
                 min: Fx::ONE,
@@ -92,17 +114,67 @@ impl Material {
         })
     }
 
-    /// The same material with a checkerboard of `size`-wide squares alternating its colour
-    /// with `other`.
-    pub fn with_checker(self, size: Fx, other: Rgb) -> Result<Self, Error> {
+    /// The same material with a checkerboard of `size`-wide squares (above 0, at most
+    /// [`LIMIT`](crate::LIMIT)) alternating its colour with `other`.
+    pub fn with_checker(self, size: f32, other: Rgb) -> Result<Self, Error> {
+        self.with_checker_fx(
+            check::f32_within(size, Fx::DELTA, crate::LIMIT, Quantity::CheckerSize)?,
+            other,
+        )
+    }
+
+    /// [`Material::with_checker`] in fixed point, for `const` and `static` scenes.
+    pub const fn with_checker_fx(self, size: Fx, other: Rgb) -> Result<Self, Error> {
         // Above zero: the smallest Q16.16 value above it is one step.
-        within(size, Fx::DELTA, crate::LIMIT, Quantity::CheckerSize)?;
-        Ok(Material {
-            checker: Some(Checker { size, other }),
-            ..self
-        })
+        if let Err(e) = check::within(size, Fx::DELTA, crate::LIMIT, Quantity::CheckerSize) {
+            return Err(e);
+        }
+        let mut material = self;
+        material.checker = Some(Checker { size, other });
+        Ok(material)
+    }
+
+    /// The surface colour under full white light.
+    #[must_use]
+    pub const fn colour(&self) -> Rgb {
+        self.colour
+    }
+
+    /// Weight of the diffuse (Lambert) term, 0 to 2.
+    #[must_use]
+    pub const fn diffuse(&self) -> Fx {
+        self.diffuse
+    }
+
+    /// Weight of the specular (Blinn-Phong) highlight, 0 to 16.
+    #[must_use]
+    pub const fn specular(&self) -> Fx {
+        self.specular
+    }
+
+    /// Specular exponent, 1 to 4096: larger is a smaller, sharper highlight.
+    #[must_use]
+    pub const fn shininess(&self) -> u16 {
+        self.shininess
+    }
+
+    /// Share of the mirror image added, 0 to 1.
+    #[must_use]
+    pub const fn reflect(&self) -> Fx {
+        self.reflect
+    }
+
+    /// The checkerboard that alternates the colour with another, for planes, if any.
+    #[must_use]
+    pub const fn checker(&self) -> Option<Checker> {
+        self.checker
     }
 }
+
+/// The largest diffuse weight [`Material::new`] accepts.
+const MAX_DIFFUSE: Fx = Fx::const_from_int(2);
+/// The largest specular weight [`Material::new`] accepts.
+const MAX_SPECULAR: Fx = Fx::const_from_int(16);
 
 impl From<Rgb> for Material {
     fn from(colour: Rgb) -> Self {
@@ -118,21 +190,28 @@ impl From<Rgb> for Material {
 /// when the sum of its indices is even.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Checker {
-    /// Side of a square, in world units.
-    pub size: Fx,
-    /// The colour of the odd squares.
-    pub other: Rgb,
+    size: Fx,
+    other: Rgb,
 }
 
 impl Checker {
+    /// Side of a square, in world units.
+    #[must_use]
+    pub const fn size(&self) -> Fx {
+        self.size
+    }
+
+    /// The colour of the odd squares.
+    #[must_use]
+    pub const fn other(&self) -> Rgb {
+        self.other
+    }
+
     /// The colour of the square at plane coordinates `uv`.
     #[must_use]
     pub fn colour_at(&self, even: Rgb, uv: [Fx; 2]) -> Rgb {
-        // `size` is a public field: a square of no size is one colour, not a division by zero.
-        let size = self.size.to_bits() as i64;
-        if size <= 0 {
-            return even;
-        }
+        // Positive, as its constructor checked; `max` keeps the division visibly safe.
+        let size = (self.size.to_bits() as i64).max(1);
         let index = |c: Fx| (c.to_bits() as i64).div_euclid(size);
         if (index(uv[0]) + index(uv[1])) & 1 == 0 {
             even

@@ -3,22 +3,24 @@
 pub(crate) mod background;
 pub(crate) mod colour;
 pub(crate) mod cone;
+pub(crate) mod hit;
 pub(crate) mod light;
 pub(crate) mod linear;
 pub(crate) mod material;
 
 pub use background::Background;
 pub use colour::Rgb;
+pub use hit::SceneHit;
 pub use light::Light;
 pub use material::{Checker, Material};
 
-use heapless::Vec;
-
-use crate::error::{Error, Quantity, within};
+use crate::check;
+use crate::error::{Error, Quantity};
 use crate::geometry::plane::Plane;
 use crate::geometry::shape::Shape;
 use crate::geometry::sphere::Sphere;
 use crate::numbers::fx::Fx;
+use crate::numbers::vec3::Vec3;
 use crate::scene::cone::ShadowCone;
 
 /// A shape and what it is made of.
@@ -31,9 +33,15 @@ pub struct Object {
 }
 
 impl Object {
+    /// A shape made of a material.
+    #[must_use]
+    pub const fn new(shape: Shape, material: Material) -> Self {
+        Object { shape, material }
+    }
+
     /// The surface colour at a hit point: the material's, or its checkerboard's on a plane.
     #[must_use]
-    pub fn colour_at(&self, point: crate::Vec3) -> Rgb {
+    pub fn colour_at(&self, point: Vec3) -> Rgb {
         match (self.material.checker, self.shape) {
             (Some(checker), Shape::Plane(plane)) => {
                 checker.colour_at(self.material.colour, plane.coords(point))
@@ -41,6 +49,12 @@ impl Object {
             _ => self.material.colour,
         }
     }
+
+    /// What fills a scene's unused slots; never shown.
+    const UNUSED: Object = Object {
+        shape: Shape::Sphere(Sphere::UNIT),
+        material: Material::matte(Rgb::BLACK),
+    };
 }
 
 /// Up to `N` objects and `L` point lights, an ambient term and a background.
@@ -49,23 +63,52 @@ impl Object {
 /// on and mirrors follow up to [`Scene::DEFAULT_DEPTH`] bounces unless set otherwise.
 ///
 /// ```
-/// use fixray::{Fx, Light, Plane, Ray, Rgb, Scene, Sphere, Vec3};
-/// let light = Light::new(Vec3::from_ints(-20, 20, 20), Fx::from_num(0.8)).unwrap();
-/// let mut scene: Scene<2> = Scene::new(light, Fx::from_num(0.2), Rgb::new(50, 180, 205)).unwrap();
-/// let ball = scene.add_sphere(Sphere::new(Vec3::from_ints(0, 0, -10), Fx::from_num(2)).unwrap(), Rgb::WHITE).unwrap();
-/// scene.add_plane(Plane::new(Vec3::from_ints(0, -4, 0), Vec3::Y).unwrap(), Rgb::WHITE).unwrap();
+/// use fixray::{Light, Plane, Ray, Rgb, Scene, Sphere, Vec3};
+/// let light = Light::new([-20.0, 20.0, 20.0], 0.8)?;
+/// let mut scene: Scene<2> = Scene::new(light, 0.2, Rgb::new(50, 180, 205))?;
+/// let ball = scene.add_sphere(Sphere::new([0.0, 0.0, -10.0], 2.0)?, Rgb::WHITE)?;
+/// scene.add_plane(Plane::new([0.0, -4.0, 0.0], [0.0, 1.0, 0.0])?, Rgb::WHITE)?;
 /// // A third object does not fit.
-/// assert!(scene.add_plane(Plane::new(Vec3::ZERO, Vec3::Z).unwrap(), Rgb::BLACK).is_err());
+/// assert!(scene.add_plane(Plane::new([0.0; 3], [0.0, 0.0, 1.0])?, Rgb::BLACK).is_err());
 ///
-/// let ray = Ray::new(Vec3::ZERO, Vec3::from_ints(0, 0, -1)).unwrap();
-/// assert_eq!(scene.shoot(&ray).unwrap().object, ball);
-/// let up = Ray::new(Vec3::ZERO, Vec3::Y).unwrap();
-/// assert_eq!(scene.trace(&up), Rgb::new(50, 180, 205));
+/// let ray = Ray::new(Vec3::ZERO, -Vec3::Z)?;
+/// assert_eq!(scene.shoot(&ray).map(|hit| hit.object()), Some(ball));
+/// assert_eq!(scene.trace(&Ray::new(Vec3::ZERO, Vec3::Y)?), Rgb::new(50, 180, 205));
+/// # Ok::<(), fixray::Error>(())
+/// ```
+///
+/// A scene can also be a `static`, built at compile time by the `const` constructors (the
+/// fixed-point forms, `from_fx`): the values are checked by the compiler, and on a
+/// microcontroller the scene lies in flash, not on the stack.
+///
+/// ```
+/// use fixray::{Background, Error, Fx, Light, Material, Object, Rgb, Scene, Shape, Sphere, Vec3};
+/// const fn ok<T: Copy>(result: Result<T, Error>) -> T {
+///     match result {
+///         Ok(value) => value,
+///         Err(_) => panic!("out of range"),
+///     }
+/// }
+/// static SCENE: Scene<1, 1> = {
+///     let light = ok(Light::from_fx(Vec3::from_ints(-20, 20, 20), Fx::ONE));
+///     let ball = ok(Sphere::from_fx(Vec3::from_ints(0, 0, -10), Fx::const_from_int(2)));
+///     let mut scene = match Scene::from_fx(light, Fx::ZERO, Background::plain(Rgb::BLACK)) {
+///         Ok(scene) => scene,
+///         Err(_) => panic!("out of range"),
+///     };
+///     ok(scene.add(Object::new(Shape::Sphere(ball), Material::matte(Rgb::WHITE))));
+///     scene
+/// };
+/// assert_eq!(SCENE.objects().len(), 1);
 /// ```
 #[derive(Debug, Clone)]
 pub struct Scene<const N: usize, const L: usize = 4> {
-    objects: Vec<Object, N>,
-    lights: Vec<Light, L>,
+    /// The objects in `objects[..object_count]`; the rest are unused.
+    objects: [Object; N],
+    object_count: usize,
+    /// The lights in `lights[..light_count]`.
+    lights: [Light; L],
+    light_count: usize,
     /// `cones[light][object]`: what each light sees of each sphere, to skip shadow tests.
     cones: [[ShadowCone; N]; L],
     ambient: Fx,
@@ -84,32 +127,49 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// `background` where rays escape (an [`Rgb`] or a [`Background`] gradient).
     pub fn new(
         light: Light,
-        ambient: Fx,
+        ambient: f32,
         background: impl Into<Background>,
     ) -> Result<Self, Error> {
+        let ambient = check::f32_within(ambient, Fx::ZERO, Fx::ONE, Quantity::Ambient)?;
+        Scene::from_fx(light, ambient, background.into())
+    }
+
+    /// [`Scene::new`] in fixed point, for `const` and `static` scenes.
+    pub const fn from_fx(light: Light, ambient: Fx, background: Background) -> Result<Self, Error> {
+        if let Err(e) = check::within(ambient, Fx::ZERO, Fx::ONE, Quantity::Ambient) {
+            return Err(e);
+        }
         let mut scene = Scene {
-            objects: Vec::new(),
+            objects: [Object::UNUSED; N],
+            object_count: 0,
+            lights: [light; L],
+            light_count: 0,
             cones: [[ShadowCone::ALWAYS; N]; L],
-            lights: Vec::new(),
-            ambient: within(ambient, Fx::ZERO, Fx::ONE, Quantity::Ambient)?,
-            background: background.into(),
+            ambient,
+            background,
             shadows: true,
             depth: Self::DEFAULT_DEPTH,
             present: 0,
         };
-        scene.add_light(light)?;
-        Ok(scene)
+        match scene.add_light(light) {
+            Ok(_) => Ok(scene),
+            Err(e) => Err(e),
+        }
     }
 
     /// Adds an object and returns its index, or an error when the scene is full.
-    pub fn add(&mut self, object: Object) -> Result<usize, Error> {
-        self.objects
-            .push(object)
-            .map_err(|_| Error::CapacityExceeded { capacity: N })?;
-        let index = self.objects.len() - 1;
-        self.present = low_bits(self.objects.len());
-        for (cones, light) in self.cones.iter_mut().zip(&self.lights) {
-            cones[index] = ShadowCone::new(light.position, &object.shape);
+    pub const fn add(&mut self, object: Object) -> Result<usize, Error> {
+        let index = self.object_count;
+        if index >= N {
+            return Err(Error::CapacityExceeded { capacity: N });
+        }
+        self.objects[index] = object;
+        self.object_count += 1;
+        self.present = low_bits(self.object_count);
+        let mut light = 0;
+        while light < self.light_count {
+            self.cones[light][index] = ShadowCone::new(self.lights[light].position, &object.shape);
+            light += 1;
         }
         Ok(index)
     }
@@ -120,10 +180,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         sphere: Sphere,
         material: impl Into<Material>,
     ) -> Result<usize, Error> {
-        self.add(Object {
-            shape: Shape::Sphere(sphere),
-            material: material.into(),
-        })
+        self.add(Object::new(Shape::Sphere(sphere), material.into()))
     }
 
     /// Adds a plane of a material (or a plain [`Rgb`], which is matte).
@@ -132,20 +189,22 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         plane: Plane,
         material: impl Into<Material>,
     ) -> Result<usize, Error> {
-        self.add(Object {
-            shape: Shape::Plane(plane),
-            material: material.into(),
-        })
+        self.add(Object::new(Shape::Plane(plane), material.into()))
     }
 
     /// Adds another light, or an error when `L` are already there.
-    pub fn add_light(&mut self, light: Light) -> Result<usize, Error> {
-        self.lights
-            .push(light)
-            .map_err(|_| Error::CapacityExceeded { capacity: L })?;
-        let index = self.lights.len() - 1;
-        for (cone, object) in self.cones[index].iter_mut().zip(&self.objects) {
-            *cone = ShadowCone::new(light.position, &object.shape);
+    pub const fn add_light(&mut self, light: Light) -> Result<usize, Error> {
+        let index = self.light_count;
+        if index >= L {
+            return Err(Error::CapacityExceeded { capacity: L });
+        }
+        self.lights[index] = light;
+        self.light_count += 1;
+        let mut object = 0;
+        while object < self.object_count {
+            self.cones[index][object] =
+                ShadowCone::new(light.position, &self.objects[object].shape);
+            object += 1;
         }
         Ok(index)
     }
@@ -155,24 +214,23 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// again, so the next render is exactly that of a scene built with the new object.
     ///
     /// ```
-    /// use fixray::{Fx, Light, Rgb, Scene, Shape, Sphere, Vec3, Error};
-    /// let light = Light::new(Vec3::from_ints(0, 20, 0), Fx::ONE)?;
-    /// let mut scene: Scene<2> = Scene::new(light, Fx::from_num(0.2), Rgb::BLACK)?;
-    /// let ball = scene.add_sphere(Sphere::new(Vec3::from_ints(0, 0, -10), Fx::ONE)?, Rgb::WHITE)?;
-    /// let moved = Sphere::new(Vec3::from_ints(3, 0, -10), Fx::ONE)?;
-    /// scene.set_shape(ball, Shape::Sphere(moved))?;
+    /// use fixray::{Error, Light, Rgb, Scene, Shape, Sphere};
+    /// let light = Light::new([0.0, 20.0, 0.0], 1.0)?;
+    /// let mut scene: Scene<2> = Scene::new(light, 0.2, Rgb::BLACK)?;
+    /// let ball = scene.add_sphere(Sphere::new([0.0, 0.0, -10.0], 1.0)?, Rgb::WHITE)?;
+    /// let moved = Sphere::new([3.0, 0.0, -10.0], 1.0)?;
+    /// scene.set_shape(ball, moved.into())?;
     /// assert_eq!(scene.objects()[ball].shape, Shape::Sphere(moved));
     /// assert_eq!(scene.set_shape(5, Shape::Sphere(moved)), Err(Error::NoSuchObject { index: 5, count: 1 }));
     /// # Ok::<(), fixray::Error>(())
     /// ```
     pub fn set_object(&mut self, index: usize, object: Object) -> Result<(), Error> {
-        let count = self.objects.len();
-        let slot = self
-            .objects
+        let count = self.object_count;
+        let slot = self.objects[..count]
             .get_mut(index)
             .ok_or(Error::NoSuchObject { index, count })?;
         *slot = object;
-        for (cones, light) in self.cones.iter_mut().zip(&self.lights) {
+        for (cones, light) in self.cones.iter_mut().zip(&self.lights[..self.light_count]) {
             cones[index] = ShadowCone::new(light.position, &object.shape);
         }
         Ok(())
@@ -191,9 +249,8 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         index: usize,
         material: impl Into<Material>,
     ) -> Result<(), Error> {
-        let count = self.objects.len();
-        let object = self
-            .objects
+        let count = self.object_count;
+        let object = self.objects[..count]
             .get_mut(index)
             .ok_or(Error::NoSuchObject { index, count })?;
         object.material = material.into();
@@ -202,8 +259,8 @@ impl<const N: usize, const L: usize> Scene<N, L> {
 
     /// The material of object `index`.
     fn material_of(&self, index: usize) -> Result<Material, Error> {
-        let count = self.objects.len();
-        self.objects
+        let count = self.object_count;
+        self.objects()
             .get(index)
             .map(|object| object.material)
             .ok_or(Error::NoSuchObject { index, count })
@@ -211,21 +268,21 @@ impl<const N: usize, const L: usize> Scene<N, L> {
 
     /// Moves, brightens or dims light `index`; its shadow cones are worked out again.
     pub fn set_light(&mut self, index: usize, light: Light) -> Result<(), Error> {
-        let count = self.lights.len();
-        let slot = self
-            .lights
+        let count = self.light_count;
+        let slot = self.lights[..count]
             .get_mut(index)
             .ok_or(Error::NoSuchLight { index, count })?;
         *slot = light;
-        for (cone, object) in self.cones[index].iter_mut().zip(&self.objects) {
+        let objects = &self.objects[..self.object_count];
+        for (cone, object) in self.cones[index].iter_mut().zip(objects) {
             *cone = ShadowCone::new(light.position, &object.shape);
         }
         Ok(())
     }
 
     /// Sets the ambient light, 0 to 1.
-    pub fn set_ambient(&mut self, ambient: Fx) -> Result<(), Error> {
-        self.ambient = within(ambient, Fx::ZERO, Fx::ONE, Quantity::Ambient)?;
+    pub fn set_ambient(&mut self, ambient: f32) -> Result<(), Error> {
+        self.ambient = check::f32_within(ambient, Fx::ZERO, Fx::ONE, Quantity::Ambient)?;
         Ok(())
     }
 
@@ -248,13 +305,13 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// The objects, in the order they were added.
     #[must_use]
     pub fn objects(&self) -> &[Object] {
-        &self.objects
+        &self.objects[..self.object_count]
     }
 
     /// The lights, in the order they were added.
     #[must_use]
     pub fn lights(&self) -> &[Light] {
-        &self.lights
+        &self.lights[..self.light_count]
     }
 
     /// The ambient term.

@@ -1,11 +1,11 @@
 //! Which objects a row of rays, or a ray from the eye, can meet: the culling behind
 //! `render_row`'s runs, and what rays from one point share.
 
-use crate::geometry::hit::Hit;
 use crate::geometry::ray::Ray;
 use crate::geometry::shape::Shape;
 use crate::numbers::fx::Fx;
 use crate::numbers::vec3::Vec3;
+use crate::scene::hit::SceneHit;
 use crate::scene::{Object, Scene};
 
 impl<const N: usize, const L: usize> Scene<N, L> {
@@ -56,17 +56,16 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     // Not stable API: for fixray's profiling firmware and tests, hidden from the docs.
     #[doc(hidden)]
     #[must_use]
-    pub fn shoot_among(&self, ray: &Ray, among: u64) -> Option<Hit> {
-        let ray = &ray.bounded();
-        self.nearest_among(ray, among, |_, shape| shape.hit_distance_bounded(ray))
+    pub fn shoot_among(&self, ray: &Ray, among: u64) -> Option<SceneHit> {
+        self.nearest_among(ray, among, |_, shape| shape.hit_distance(ray))
     }
 
     /// [`Scene::shoot_among`] for a ray from `eye.origin()`, with what all such rays share
     /// worked out once: the same hit, for less.
-    pub(crate) fn shoot_from_eye(&self, ray: &Ray, among: u64, eye: &Eye<N>) -> Option<Hit> {
+    pub(crate) fn shoot_from_eye(&self, ray: &Ray, among: u64, eye: &Eye<N>) -> Option<SceneHit> {
         self.nearest_among(ray, among, |index, shape| match shape {
             Shape::Plane(plane) => plane.hit_distance_from(ray, eye.numerator(index)),
-            Shape::Sphere(sphere) => sphere.hit_distance_bounded(ray),
+            Shape::Sphere(sphere) => sphere.hit_distance(ray),
         })
     }
 
@@ -78,7 +77,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         ray: &Ray,
         among: u64,
         distance: impl Fn(usize, &Shape) -> Option<Fx>,
-    ) -> Option<Hit> {
+    ) -> Option<SceneHit> {
         // Hits lie within FAR, so any hit is nearer than MAX.
         let (mut best, mut nearest) = (Fx::MAX, usize::MAX);
         let mut try_object = |index: usize, object: &Object| {
@@ -99,10 +98,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
             try_object(index, object);
         }
         let hit = self.objects().get(nearest)?.shape.hit_at(ray, best);
-        Some(Hit {
-            object: nearest,
-            ..hit
-        })
+        Some(SceneHit::new(hit, nearest))
     }
 }
 

@@ -5,7 +5,8 @@ use micromath::F32Ext;
 
 use embedded_graphics::geometry::Size;
 
-use crate::error::{CameraProblem, Error, Quantity, within};
+use crate::check::{self, within};
+use crate::error::{CameraProblem, Error, Quantity};
 use crate::geometry::ray::Ray;
 use crate::numbers::fx::{FRAC, Fx};
 use crate::numbers::isqrt::isqrt;
@@ -110,7 +111,7 @@ fn check_resolution(cols: u16, rows: u16) -> Result<(), Error> {
 /// that it rounds to zero (the range 2⁻¹⁶ to 1024 of [`Error::OutOfRange`]).
 ///
 /// The range is checked here, where `value` is known to be positive, rather than by the
-/// general `fx_from_f32_within`: with constant inputs (a firmware's fixed pinhole camera) the
+/// general `check::f32_within`: with constant inputs (a firmware's fixed pinhole camera) the
 /// pinhole's whole set-up, ray budget included, then folds away at compile time.
 fn positive(value: f32, quantity: Quantity) -> Result<Fx, Error> {
     if !value.is_finite() {
@@ -314,9 +315,9 @@ impl Camera {
         rows: u16,
     ) -> Result<Self, Error> {
         check_resolution(cols, rows)?;
-        let eye = Vec3::from_f32(eye, Quantity::CameraEye)?;
-        let target = Vec3::from_f32(target, Quantity::CameraTarget)?;
-        let up = Vec3::from_f32(up, Quantity::CameraUp)?;
+        let eye = check::f32_point(eye, Quantity::CameraEye)?;
+        let target = check::f32_point(target, Quantity::CameraTarget)?;
+        let up = check::f32_point(up, Quantity::CameraUp)?;
         if !fov_y_degrees.is_finite() {
             return Err(Error::NotFinite {
                 quantity: Quantity::FieldOfView,
