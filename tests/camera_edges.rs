@@ -9,6 +9,7 @@ use fixray::{
     Camera, Error, Fx, LIMIT, Quantity, Ray, Rgb, Size, demo, render_row, render_row_supersampled,
     shoot_row, shoot_row_skipping,
 };
+use fixray_reference::ToF64;
 use fixray_reference::{DRay, DScene, DVec3};
 
 type V = [f64; 3];
@@ -103,7 +104,7 @@ impl Exact {
 
     /// How far (pixels) the ray through pixel (`col`, `row`) lands from the pixel's centre.
     fn shift(&self, ray: &Ray, col: u32, row: u32) -> f64 {
-        let (x, y) = self.landing(ray.dir.to_f64());
+        let (x, y) = self.landing(ray.dir().to_f64());
         (x - (col as f64 + 0.5)).hypot(y - (row as f64 + 0.5))
     }
 }
@@ -156,7 +157,7 @@ const STEP: f64 = 1.0 / 65536.0;
 fn assert_rays_continue_the_plane(name: &str, camera: &Camera, exact: &Exact) {
     for row in lines(camera.height()) {
         for col in lines(camera.width()) {
-            let dir = camera.ray(col, row).dir.to_f64();
+            let dir = camera.ray(col, row).dir().to_f64();
             // Each component is within one Q16.16 step of the unit vector along the rounded
             // direction, so the length is within √3 steps of 1.
             let length = dot(dir, dir).sqrt();
@@ -268,15 +269,15 @@ fn a_ray_far_right_of_a_small_screen_looks_right() {
         .size(Size::new(2, 2))
         .build()
         .unwrap();
-    let dir = camera.ray(40000, 0).dir.to_f64();
+    let dir = camera.ray(40000, 0).dir().to_f64();
     assert!(dir[0] > 0.99999 && dir[2] < 0.0, "{dir:?}");
     // And row 40 000 looks down, not up.
-    let dir = camera.ray(1, 40000).dir.to_f64();
+    let dir = camera.ray(1, 40000).dir().to_f64();
     assert!(dir[1] < -0.99999 && dir[2] < 0.0, "{dir:?}");
     // The sub-pixel samples too.
     let dir = camera
         .sample_ray(u32::MAX, u32::MAX, 15, 15, 16)
-        .dir
+        .dir()
         .to_f64();
     assert!(dir[0] > 0.7 && dir[1] < -0.7, "{dir:?}");
 }
@@ -608,7 +609,7 @@ fn survey(fov: f32, cols: u32, rows: u32) -> FovAccuracy {
     for row in 0..rows {
         for col in 0..cols {
             let ray = camera.ray(col, row);
-            let object = scene.shoot(&ray).map(|h| h.object);
+            let object = scene.shoot(&ray).map(|h| h.object());
             let (x, y) = (col as f64 + 0.5, row as f64 + 0.5);
             a.pixels += 1;
             a.ray_shift = a.ray_shift.max(exact.shift(&ray, col, row));

@@ -179,9 +179,9 @@ fn rgb888_is_the_shaded_colour_and_rgb565_rounds_each_channel() {
 /// the rim (x² + y² is 32.5 or 36.5 at the nearest), so Q16.16 cannot move a pixel.
 #[test]
 fn a_sphere_straight_ahead_matches_the_ascii_art() {
-    let light = Light::new(Vec3::from_ints(0, 0, 10), Fx::ONE).unwrap();
-    let mut scene: Scene<1> = Scene::new(light, Fx::ONE, Rgb::BLACK).unwrap();
-    let sphere = Sphere::new(Vec3::from_ints(0, 0, -10), Fx::from_num(6)).unwrap();
+    let light = Light::from_fx(Vec3::from_ints(0, 0, 10), Fx::ONE).unwrap();
+    let mut scene: Scene<1> = Scene::new(light, 1.0, Rgb::BLACK).unwrap();
+    let sphere = Sphere::from_fx(Vec3::from_ints(0, 0, -10), Fx::from_num(6)).unwrap();
     scene.add_sphere(sphere, Rgb::WHITE).unwrap();
     let camera = Camera::pinhole(16.0, 16.0, 8.0)
         .size(Size::new(16, 16))

@@ -10,12 +10,11 @@ use fixray::{Camera, Fx, Light, Material, Plane, Rgb, Scene, Size, Sphere, Vec3,
 const SKY: Rgb = Rgb::new(40, 60, 200);
 
 fn light() -> Light {
-    Light::new(Vec3::from_ints(-20, 30, 20), Fx::from_num(0.8)).unwrap()
+    Light::from_fx(Vec3::from_ints(-20, 30, 20), Fx::from_num(0.8)).unwrap()
 }
 
 fn sphere(x: f32, y: f32, z: f32, r: f32) -> Sphere {
-    let centre = Vec3::from_f32([x, y, z], fixray::Quantity::SphereCentre).unwrap();
-    Sphere::new(centre, Fx::from_num(r)).unwrap()
+    Sphere::new([x, y, z], r).unwrap()
 }
 
 fn look_ahead(cols: u32, rows: u32) -> Camera {
@@ -50,7 +49,7 @@ fn frame<const N: usize>(scene: &Scene<N>, camera: &Camera) -> Vec<Rgb> {
 
 #[test]
 fn objects_past_the_64th_are_drawn_when_object_63_is_out_of_the_run() {
-    let mut scene: Scene<70> = Scene::new(light(), Fx::from_num(0.2), SKY).unwrap();
+    let mut scene: Scene<70> = Scene::new(light(), 0.2, SKY).unwrap();
     for i in 0..63 {
         // Behind the camera: never in view.
         scene
@@ -66,7 +65,7 @@ fn objects_past_the_64th_are_drawn_when_object_63_is_out_of_the_run() {
     assert_eq!((small, large), (63, 64));
     let camera = look_ahead(160, 128);
     assert_eq!(
-        scene.shoot(&camera.ray(80, 64)).map(|h| h.object),
+        scene.shoot(&camera.ray(80, 64)).map(|h| h.object()),
         Some(64),
         "the centre pixel sees object 64"
     );
@@ -75,9 +74,9 @@ fn objects_past_the_64th_are_drawn_when_object_63_is_out_of_the_run() {
 
 #[test]
 fn a_mirror_past_the_64th_object_does_not_see_itself() {
-    let ground = || Plane::new(Vec3::from_ints(0, -2, 0), Vec3::Y).unwrap();
+    let ground = || Plane::from_fx(Vec3::from_ints(0, -2, 0), Vec3::Y).unwrap();
     let far = |i: i32| sphere(-300.0 + 10.0 * i as f32, 40.0, -900.0, 1.0);
-    let mirror = Material::new(
+    let mirror = Material::from_fx(
         Rgb::WHITE,
         Fx::from_num(0.1),
         Fx::ZERO,
@@ -87,7 +86,7 @@ fn a_mirror_past_the_64th_object_does_not_see_itself() {
     .unwrap();
     let ball = || sphere(0.0, 0.0, -6.0, 1.5);
 
-    let mut mirror_last: Scene<70> = Scene::new(light(), Fx::from_num(0.2), SKY).unwrap();
+    let mut mirror_last: Scene<70> = Scene::new(light(), 0.2, SKY).unwrap();
     for i in 0..64 {
         mirror_last.add_sphere(far(i), Rgb::WHITE).unwrap();
     }
@@ -96,7 +95,7 @@ fn a_mirror_past_the_64th_object_does_not_see_itself() {
         .unwrap();
     assert_eq!(mirror_last.add_sphere(ball(), mirror).unwrap(), 65);
 
-    let mut mirror_first: Scene<70> = Scene::new(light(), Fx::from_num(0.2), SKY).unwrap();
+    let mut mirror_first: Scene<70> = Scene::new(light(), 0.2, SKY).unwrap();
     mirror_first.add_sphere(ball(), mirror).unwrap();
     for i in 0..64 {
         mirror_first.add_sphere(far(i), Rgb::WHITE).unwrap();
@@ -114,7 +113,7 @@ fn a_mirror_past_the_64th_object_does_not_see_itself() {
 
 #[test]
 fn an_eye_on_top_of_a_sphere_sees_the_sky_above_it() {
-    let mut scene: Scene<2> = Scene::new(light(), Fx::from_num(0.2), SKY).unwrap();
+    let mut scene: Scene<2> = Scene::new(light(), 0.2, SKY).unwrap();
     let big = scene
         .add_sphere(sphere(0.0, -50.0, 0.0, 50.0), Rgb::new(200, 200, 0))
         .unwrap();
@@ -125,26 +124,26 @@ fn an_eye_on_top_of_a_sphere_sees_the_sky_above_it() {
     for row in 0..camera.height() {
         for col in 0..camera.width() {
             let ray = camera.ray(col, row);
-            let seen = scene.shoot(&ray).map(|h| h.object);
-            if ray.dir.y > Fx::ZERO {
+            let seen = scene.shoot(&ray).map(|h| h.object());
+            if ray.dir().y > Fx::ZERO {
                 // Above the horizon the eye leaves the big sphere: only the small ball or sky.
                 assert_ne!(seen, Some(big), "row {row}, column {col}");
-            } else if ray.dir.y < Fx::ZERO {
+            } else if ray.dir().y < Fx::ZERO {
                 // Below it every ray crosses the big sphere, whose inside is all it sees.
                 assert_eq!(seen, Some(big), "row {row}, column {col}");
             }
         }
     }
     let centre = camera.ray(80, 54); // 2/20 up: the small ball's centre row
-    assert_eq!(scene.shoot(&centre).map(|h| h.object), Some(small));
+    assert_eq!(scene.shoot(&centre).map(|h| h.object()), Some(small));
     assert_eq!(pixels_unlike_tracing(&scene, &camera), 0);
 }
 
 #[test]
 fn an_eye_on_a_plane_sees_it_edge_on_and_not_at_all() {
-    let mut scene: Scene<2> = Scene::new(light(), Fx::from_num(0.2), SKY).unwrap();
+    let mut scene: Scene<2> = Scene::new(light(), 0.2, SKY).unwrap();
     scene
-        .add_plane(Plane::new(Vec3::ZERO, Vec3::Y).unwrap(), Rgb::WHITE)
+        .add_plane(Plane::from_fx(Vec3::ZERO, Vec3::Y).unwrap(), Rgb::WHITE)
         .unwrap();
     let ball = scene
         .add_sphere(sphere(0.0, 0.0, -10.0, 2.0), Rgb::new(200, 0, 0))
@@ -155,7 +154,7 @@ fn an_eye_on_a_plane_sees_it_edge_on_and_not_at_all() {
         for col in 0..camera.width() {
             let hit = scene.shoot(&camera.ray(col, row));
             assert!(
-                hit.is_none_or(|h| h.object == ball),
+                hit.is_none_or(|h| h.object() == ball),
                 "row {row}, column {col}: {hit:?}"
             );
             sky += usize::from(hit.is_none());
@@ -182,16 +181,16 @@ fn the_reference_agrees_on_eyes_placed_on_surfaces() {
     .unwrap();
     let camera = look_ahead(160, 128);
 
-    let mut on_sphere: Scene<2> = Scene::new(light(), Fx::from_num(0.2), SKY).unwrap();
+    let mut on_sphere: Scene<2> = Scene::new(light(), 0.2, SKY).unwrap();
     on_sphere
         .add_sphere(sphere(0.0, -50.0, 0.0, 50.0), Rgb::new(200, 200, 0))
         .unwrap();
     on_sphere
         .add_sphere(sphere(0.0, 2.0, -20.0, 1.0), Rgb::new(200, 0, 0))
         .unwrap();
-    let mut on_plane: Scene<2> = Scene::new(light(), Fx::from_num(0.2), SKY).unwrap();
+    let mut on_plane: Scene<2> = Scene::new(light(), 0.2, SKY).unwrap();
     on_plane
-        .add_plane(Plane::new(Vec3::ZERO, Vec3::Y).unwrap(), Rgb::WHITE)
+        .add_plane(Plane::from_fx(Vec3::ZERO, Vec3::Y).unwrap(), Rgb::WHITE)
         .unwrap();
     on_plane
         .add_sphere(sphere(0.0, 0.0, -10.0, 2.0), Rgb::new(200, 0, 0))

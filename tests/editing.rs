@@ -10,19 +10,19 @@ use fixray::{
 const SKY: Rgb = Rgb::new(40, 60, 200);
 
 fn ball(x: i16, y: i16, z: i16, r: f32) -> Shape {
-    Shape::Sphere(Sphere::new(Vec3::from_ints(x, y, z), Fx::from_num(r)).unwrap())
+    Shape::Sphere(Sphere::from_fx(Vec3::from_ints(x, y, z), Fx::from_num(r)).unwrap())
 }
 
 fn ground() -> Shape {
-    Shape::Plane(Plane::new(Vec3::from_ints(0, -4, 0), Vec3::Y).unwrap())
+    Shape::Plane(Plane::from_fx(Vec3::from_ints(0, -4, 0), Vec3::Y).unwrap())
 }
 
 fn light(x: i16, y: i16, z: i16) -> Light {
-    Light::new(Vec3::from_ints(x, y, z), Fx::from_num(0.8)).unwrap()
+    Light::from_fx(Vec3::from_ints(x, y, z), Fx::from_num(0.8)).unwrap()
 }
 
 fn shiny() -> Material {
-    Material::new(
+    Material::from_fx(
         Rgb::new(200, 200, 40),
         Fx::ONE,
         Fx::ONE,
@@ -34,7 +34,7 @@ fn shiny() -> Material {
 
 /// A scene of `objects` lit by `lights`, built from scratch.
 fn build(objects: &[Object], lights: &[Light], background: Background) -> Scene<6, 2> {
-    let mut scene = Scene::new(lights[0], Fx::from_num(0.2), background).unwrap();
+    let mut scene = Scene::new(lights[0], 0.2, background).unwrap();
     for light in &lights[1..] {
         scene.add_light(*light).unwrap();
     }
@@ -103,9 +103,9 @@ fn every_edit_renders_as_a_scene_built_with_it() {
             4 => {
                 // A sphere replaced by a plane and back.
                 objects[1].shape = Shape::Plane(
-                    Plane::new(Vec3::from_ints(0, 0, -30), Vec3::Z)
+                    Plane::from_fx(Vec3::from_ints(0, 0, -30), Vec3::Z)
                         .unwrap()
-                        .bounded([Fx::from_num(-3), Fx::from_num(-3)], [Fx::ONE, Fx::ONE])
+                        .bounded([-3.0, -3.0], [1.0, 1.0])
                         .unwrap(),
                 );
                 scene.set_shape(1, objects[1].shape).unwrap();
@@ -155,7 +155,7 @@ fn edits_of_what_is_not_there_are_refused() {
         Err(Error::NoSuchLight { index: 1, count: 1 })
     );
     assert_eq!(
-        scene.set_ambient(Fx::from_num(1.5)),
+        scene.set_ambient(1.5),
         Err(Error::OutOfRange {
             quantity: Quantity::Ambient,
             min: Fx::ZERO,
@@ -193,7 +193,7 @@ fn pick_names_the_object_render_row_shades() {
         render_row(&scene, &camera, y, &mut row).unwrap();
         for x in 0..40 {
             let hit = scene.pick(&camera, x, y).unwrap();
-            seen[hit.map_or(2, |h| h.object)] += 1;
+            seen[hit.map_or(2, |h| h.object())] += 1;
             // The pixel is the shade of exactly that hit.
             let ray = camera.ray(x, y);
             assert_eq!(

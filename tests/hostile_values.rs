@@ -1,8 +1,9 @@
-//! Values no constructor would accept, built by hand: `Ray`, `Hit`, `Material`, `Light` and
-//! `Checker` have public fields, `Vec3` holds any Q16.16 value, and display areas any `i32`
-//! corner and `u32` size. Every public function they reach must return without a panic (this
-//! suite runs with overflow checks on) and, where it means something, with a sane answer: a
-//! hit within [0, FAR], a colour, nothing drawn outside the frame.
+//! The extremes of what fixray accepts, and beyond: `Vec3` holds any Q16.16 value, rays and
+//! lights may sit at the corners of the overflow-safe range, materials may take every weight
+//! at its limit, and display areas any `i32` corner and `u32` size. Every public function
+//! they reach must return without a panic (this suite runs with overflow checks on) and, where
+//! it means something, with a sane answer: a hit within [0, FAR], a colour, nothing drawn
+//! outside the frame. What no constructor accepts it must refuse.
 
 use core::convert::Infallible;
 
@@ -11,8 +12,8 @@ use embedded_graphics::pixelcolor::{BinaryColor, Rgb888};
 use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Rectangle;
 use fixray::{
-    Background, Camera, Checker, FAR, Framebuffer, Fx, Hit, LIMIT, Light, Material, Object, Plane,
-    Ray, Rgb, Scene, Shape, Sphere, Vec3, Viewport, demo, render_row,
+    Background, Camera, FAR, Framebuffer, Fx, LIMIT, Light, Material, Object, Plane, Ray, Rgb,
+    Scene, Shape, Sphere, Vec3, Viewport, demo, render_row,
 };
 
 /// Marsaglia's xorshift64: varied values from a fixed seed, so a failure repeats.
@@ -75,31 +76,46 @@ fn hostile_vec(rng: &mut XorShift, i: usize) -> Vec3 {
     Vec3::new(component(i), component(i + 1), component(i + 2))
 }
 
-/// The corners of Q16.16 space and its centre: where the exact dot products of a ray's
-/// direction and the vector to a sphere's centre sum to the most.
+/// The corners of the overflow-safe range and its centre: where the exact dot products of a
+/// ray's direction and the vector to a sphere's centre sum to the most.
 fn corners() -> impl Iterator<Item = Vec3> {
-    let c = [Fx::MIN, Fx::ZERO, Fx::MAX];
+    let c = [-LIMIT, Fx::ZERO, LIMIT];
     (0..27).map(move |i| Vec3::new(c[i % 3], c[i / 3 % 3], c[i / 9]))
+}
+
+/// `v` with each component clamped into ±LIMIT: the nearest point a constructor accepts.
+fn clamped(v: Vec3) -> Vec3 {
+    let c = |x: Fx| x.clamp(-LIMIT, LIMIT);
+    Vec3::new(c(v.x), c(v.y), c(v.z))
+}
+
+/// A ray from `origin` along `dir` if `Ray::new` accepts them, after checking that it refuses
+/// exactly what lies outside its range.
+fn ray(origin: Vec3, dir: Vec3) -> Option<Ray> {
+    let valid = origin == clamped(origin) && dir != Vec3::ZERO;
+    let ray = Ray::new(origin, dir);
+    assert_eq!(ray.is_ok(), valid, "Ray::new({origin:?}, {dir:?})");
+    ray.ok()
 }
 
 /// A scene with something of everything: a checkered ground, a mirror, a matte ball, a
 /// gradient sky, two lights.
 fn scene(background: Background) -> Scene<4, 2> {
-    let light = Light::new(Vec3::from_ints(-20, 20, 20), Fx::from_num(0.8)).unwrap();
-    let mut scene: Scene<4, 2> = Scene::new(light, Fx::from_num(0.2), background).unwrap();
+    let light = Light::from_fx(Vec3::from_ints(-20, 20, 20), Fx::from_num(0.8)).unwrap();
+    let mut scene: Scene<4, 2> = Scene::new(light, 0.2, background).unwrap();
     scene
-        .add_light(Light::new(Vec3::from_ints(10, 30, -5), Fx::from_num(1.5)).unwrap())
+        .add_light(Light::from_fx(Vec3::from_ints(10, 30, -5), Fx::from_num(1.5)).unwrap())
         .unwrap();
     let checker = Material::matte(Rgb::WHITE)
-        .with_checker(Fx::from_num(2), Rgb::BLACK)
+        .with_checker_fx(Fx::from_num(2), Rgb::BLACK)
         .unwrap();
     scene
         .add_plane(
-            Plane::new(Vec3::from_ints(0, -4, 0), Vec3::Y).unwrap(),
+            Plane::from_fx(Vec3::from_ints(0, -4, 0), Vec3::Y).unwrap(),
             checker,
         )
         .unwrap();
-    let mirror = Material::new(
+    let mirror = Material::from_fx(
         Rgb::new(200, 200, 255),
         Fx::from_num(0.2),
         Fx::from_num(4),
@@ -109,13 +125,13 @@ fn scene(background: Background) -> Scene<4, 2> {
     .unwrap();
     scene
         .add_sphere(
-            Sphere::new(Vec3::from_ints(0, 0, -12), Fx::from_num(3)).unwrap(),
+            Sphere::from_fx(Vec3::from_ints(0, 0, -12), Fx::from_num(3)).unwrap(),
             mirror,
         )
         .unwrap();
     scene
         .add_sphere(
-            Sphere::new(Vec3::from_ints(5, -1, -9), Fx::from_num(2)).unwrap(),
+            Sphere::from_fx(Vec3::from_ints(5, -1, -9), Fx::from_num(2)).unwrap(),
             Rgb::new(255, 40, 40),
         )
         .unwrap();
@@ -129,11 +145,10 @@ fn gradient() -> Background {
     }
 }
 
-fn assert_sane_hit(hit: &Hit, what: &str) {
+fn assert_sane_hit(t: Fx, what: &str) {
     assert!(
-        hit.t >= Fx::ZERO && hit.t <= FAR,
-        "{what}: t = {} outside [0, FAR]",
-        hit.t
+        t >= Fx::ZERO && t <= FAR,
+        "{what}: t = {t} outside [0, FAR]"
     );
 }
 
@@ -395,11 +410,10 @@ fn viewports_at_the_ends_of_i32_are_refused_or_drawn_without_overflow() {
 
 #[test]
 fn the_reproducers_return() {
-    let up = Ray {
-        origin: Vec3::ZERO,
-        dir: Vec3::new(Fx::ZERO, Fx::MAX, Fx::ZERO),
-    };
+    // The largest directions normalise to the unit ones.
+    let up = ray(Vec3::ZERO, Vec3::new(Fx::ZERO, Fx::MAX, Fx::ZERO)).unwrap();
     let sky = scene(gradient());
+    assert_eq!(up.dir(), Vec3::Y);
     assert_eq!(
         sky.trace(&up),
         sky.trace(&Ray::new(Vec3::ZERO, Vec3::Y).unwrap())
@@ -408,77 +422,65 @@ fn the_reproducers_return() {
         Vec3::new(Fx::MAX, Fx::MAX, Fx::MAX),
         Vec3::new(Fx::MIN, Fx::MIN, Fx::MIN),
     ] {
-        let ray = Ray {
-            origin: Vec3::ZERO,
-            dir,
-        };
+        let ray0 = ray(Vec3::ZERO, dir).unwrap();
         for s in [scene(gradient()), scene(Rgb::BLACK.into())] {
-            if let Some(hit) = s.shoot(&ray) {
-                assert_sane_hit(&hit, "huge direction");
+            if let Some(hit) = s.shoot(&ray0) {
+                assert_sane_hit(hit.t(), "huge direction");
             }
-            let _ = s.trace(&ray);
+            let _ = s.trace(&ray0);
         }
-        let ball = Sphere::new(Vec3::from_ints(0, 0, -10), Fx::from_num(2)).unwrap();
-        // From the far corners every product of the exact dot product is near 2⁶².
+        let ball = Sphere::from_fx(Vec3::from_ints(0, 0, -10), Fx::from_num(2)).unwrap();
+        // From the far corners every product of the exact dot product is near its largest.
         for origin in [
             Vec3::ZERO,
-            Vec3::new(Fx::MIN, Fx::MIN, Fx::MIN),
-            Vec3::new(Fx::MAX, Fx::MAX, Fx::MAX),
+            Vec3::new(-LIMIT, -LIMIT, -LIMIT),
+            Vec3::new(LIMIT, LIMIT, LIMIT),
         ] {
-            let ray = Ray { origin, dir };
-            if let Some(t) = ball.hit_distance(&ray) {
-                assert!(t >= Fx::ZERO && t <= FAR);
+            let ray = ray(origin, dir).unwrap();
+            if let Some(hit) = ball.intersect(&ray) {
+                assert_sane_hit(hit.t(), "ball");
             }
-            let _ = ball.intersect(&ray);
             let _ = scene(gradient()).trace(&ray);
         }
-    }
-    // A normal far from unit length on a mirror.
-    let s = scene(gradient());
-    let ray = Ray::new(Vec3::ZERO, -Vec3::Z).unwrap();
-    let mut hit = s.shoot(&ray).unwrap();
-    assert_eq!(hit.object, 1, "the mirror ball");
-    for normal in [
-        Vec3::new(Fx::MAX, Fx::MAX, Fx::MAX),
-        Vec3::new(Fx::MIN, Fx::MIN, Fx::MIN),
-        Vec3::new(Fx::ZERO, Fx::ZERO, Fx::MAX),
-        Vec3::ZERO,
-    ] {
-        hit.normal = normal;
-        let _ = s.shade(&ray, Some(&hit));
+        // Beyond them, Ray::new refuses.
+        assert!(ray(Vec3::new(Fx::MIN, Fx::MIN, Fx::MIN), dir).is_none());
     }
 }
 
 #[test]
-fn shooting_and_tracing_hand_built_rays_returns_sane_hits() {
+fn shooting_and_tracing_extreme_rays_returns_sane_hits() {
     let mut rng = XorShift(0x5eed_0f4a_75ee_d001);
     let scenes = [scene(gradient()), scene(Rgb::new(10, 20, 30).into())];
-    let ball = Sphere::new(Vec3::from_ints(0, 0, -10), Fx::from_num(2)).unwrap();
-    let wall = Plane::new(Vec3::from_ints(0, 0, -20), Vec3::from_ints(1, 0, 1)).unwrap();
-    let corner_rays = corners().flat_map(|origin| corners().map(move |dir| Ray { origin, dir }));
-    let hostile_rays = (0..4_000).map(|i| Ray {
-        origin: if i % 3 == 0 {
+    let ball = Sphere::from_fx(Vec3::from_ints(0, 0, -10), Fx::from_num(2)).unwrap();
+    let wall = Plane::from_fx(Vec3::from_ints(0, 0, -20), Vec3::from_ints(1, 0, 1)).unwrap();
+    let corner_rays = corners().flat_map(|origin| corners().map(move |dir| (origin, dir)));
+    let hostile_rays = (0..4_000).map(|i| {
+        let origin = if i % 3 == 0 {
             Vec3::ZERO
         } else {
             hostile_vec(&mut XorShift(i as u64 + 1), i + 7)
-        },
-        dir: hostile_vec(&mut XorShift(i as u64 + 99), (i * 7) % 4_000),
+        };
+        // Half the origins as drawn (often refused), half moved into range.
+        let origin = if i % 2 == 0 { origin } else { clamped(origin) };
+        (
+            origin,
+            hostile_vec(&mut XorShift(i as u64 + 99), (i * 7) % 4_000),
+        )
     });
-    for (i, ray) in corner_rays.chain(hostile_rays).enumerate() {
+    for (i, (origin, dir)) in corner_rays.chain(hostile_rays).enumerate() {
+        let Some(ray) = ray(origin, dir) else {
+            continue;
+        };
         let _ = ray.at(hostile(&mut rng, i));
         for shape in [Shape::Sphere(ball), Shape::Plane(wall)] {
             if let Some(hit) = shape.intersect(&ray) {
-                assert_sane_hit(&hit, "shape");
+                assert_sane_hit(hit.t(), "shape");
             }
-            if let Some(t) = shape.hit_distance(&ray) {
-                assert!(t >= Fx::ZERO && t <= FAR, "{ray:?}: {t}");
-            }
-            let _ = shape.hit_at(&ray, hostile(&mut rng, i + 1));
         }
         let s = &scenes[i % 2];
         if let Some(hit) = s.shoot(&ray) {
-            assert_sane_hit(&hit, "scene");
-            assert!(hit.object < s.objects().len());
+            assert_sane_hit(hit.t(), "scene");
+            assert!(hit.object() < s.objects().len());
             let _ = s.shade(&ray, Some(&hit));
         }
         let _ = s.shoot_among(&ray, rng.next());
@@ -487,54 +489,61 @@ fn shooting_and_tracing_hand_built_rays_returns_sane_hits() {
     }
 }
 
+/// A material from hostile weights: each drawn weight is an edge or a random pattern, and
+/// the constructor must refuse it exactly when it lies outside its range; a refused one is
+/// replaced by the nearest limit, so that the scene gets materials at their extremes.
+fn extreme_material(rng: &mut XorShift, i: usize) -> Material {
+    let mut weight = |k: usize, max: i32| {
+        let w = hostile(rng, i + k);
+        w.clamp(Fx::ZERO, Fx::from_num(max))
+    };
+    let (diffuse, specular, reflect) = (weight(0, 2), weight(1, 16), weight(2, 1));
+    let shininess = [0, 1, 2, 4096, u16::MAX, rng.next() as u16][i % 6];
+    let refused = Material::from_fx(Rgb::WHITE, diffuse, specular, shininess, reflect);
+    assert_eq!(
+        refused.is_ok(),
+        (1..=4096).contains(&shininess),
+        "shininess {shininess}"
+    );
+    let colour = Rgb::new(rng.next() as u8, rng.next() as u8, rng.next() as u8);
+    let material =
+        Material::from_fx(colour, diffuse, specular, shininess.clamp(1, 4096), reflect).unwrap();
+    if i.is_multiple_of(3) {
+        return material;
+    }
+    let size = hostile(rng, i + 3);
+    let checkered = material.with_checker_fx(size, Rgb::new(rng.next() as u8, 0, 255));
+    assert_eq!(
+        checkered.is_ok(),
+        size > Fx::ZERO && size <= LIMIT,
+        "checker size {size}"
+    );
+    checkered.unwrap_or_else(|_| {
+        material
+            .with_checker_fx(size.clamp(Fx::DELTA, LIMIT), Rgb::BLACK)
+            .unwrap()
+    })
+}
+
+/// A light at a corner of the range or a hostile point moved into it, of an extreme intensity.
+fn extreme_light(rng: &mut XorShift, i: usize) -> Light {
+    let position = hostile_vec(rng, i);
+    let intensity = hostile(rng, i + 4);
+    let light = Light::from_fx(position, intensity);
+    let valid =
+        position == clamped(position) && intensity >= Fx::ZERO && intensity <= Fx::from_num(4);
+    assert_eq!(light.is_ok(), valid, "light at {position:?} of {intensity}");
+    light.unwrap_or_else(|_| {
+        Light::from_fx(
+            clamped(position),
+            intensity.clamp(Fx::ZERO, Fx::from_num(4)),
+        )
+        .unwrap()
+    })
+}
+
 #[test]
-fn shading_hand_built_hits_returns_a_colour() {
-    let mut rng = XorShift(0x0123_4567_89ab_cdef);
-    let scenes = [scene(gradient()), scene(Rgb::WHITE.into())];
-    for i in 0..4_000 {
-        let ray = if i % 2 == 0 {
-            Ray::new(Vec3::ZERO, -Vec3::Z).unwrap()
-        } else {
-            Ray {
-                origin: hostile_vec(&mut rng, i + 11),
-                dir: hostile_vec(&mut rng, i + 13),
-            }
-        };
-        let hit = Hit {
-            t: hostile(&mut rng, i),
-            point: hostile_vec(&mut rng, i + 1),
-            normal: hostile_vec(&mut rng, i + 2),
-            // Every object, and indices past the last.
-            object: [0, 1, 2, 3, usize::MAX][i % 5],
-        };
-        let s = &scenes[(i / 5) % 2];
-        let _ = s.shade(&ray, Some(&hit));
-    }
-}
-
-fn hostile_material(rng: &mut XorShift, i: usize) -> Material {
-    Material {
-        colour: Rgb::new(rng.next() as u8, rng.next() as u8, rng.next() as u8),
-        diffuse: hostile(rng, i),
-        specular: hostile(rng, i + 1),
-        shininess: [0, 1, 2, 4096, u16::MAX, rng.next() as u16][i % 6],
-        reflect: hostile(rng, i + 2),
-        checker: (!i.is_multiple_of(3)).then(|| Checker {
-            size: hostile(rng, i + 3),
-            other: Rgb::new(rng.next() as u8, 0, 255),
-        }),
-    }
-}
-
-fn hostile_light(rng: &mut XorShift, i: usize) -> Light {
-    Light {
-        position: hostile_vec(rng, i),
-        intensity: hostile(rng, i + 4),
-    }
-}
-
-#[test]
-fn hand_built_materials_lights_and_checkers_render_and_trace() {
+fn extreme_materials_lights_and_checkers_render_and_trace() {
     let mut rng = XorShift(0xfeed_beef_dead_c0de);
     let camera = Camera::look_at([0.0, 1.0, 4.0], [0.0, -1.0, -12.0])
         .fov_degrees(70.0)
@@ -548,30 +557,28 @@ fn hand_built_materials_lights_and_checkers_render_and_trace() {
         } else {
             Background::plain(Rgb::new(1, 2, 3))
         };
-        let Ok(mut s) =
-            Scene::<5, 3>::new(hostile_light(&mut rng, i), Fx::from_num(0.3), background)
-        else {
-            continue;
-        };
-        s.add_light(hostile_light(&mut rng, i + 1)).unwrap();
+        let mut s = Scene::<5, 3>::new(extreme_light(&mut rng, i), 0.3, background).unwrap();
+        s.add_light(extreme_light(&mut rng, i + 1)).unwrap();
         s.add_plane(
-            Plane::new(Vec3::from_ints(0, -4, 0), Vec3::Y).unwrap(),
-            hostile_material(&mut rng, i),
+            Plane::from_fx(Vec3::from_ints(0, -4, 0), Vec3::Y).unwrap(),
+            extreme_material(&mut rng, i),
         )
         .unwrap();
         s.add(Object {
-            shape: Shape::Sphere(Sphere::new(Vec3::from_ints(0, 0, -12), Fx::from_num(3)).unwrap()),
-            material: hostile_material(&mut rng, i + 1),
+            shape: Shape::Sphere(
+                Sphere::from_fx(Vec3::from_ints(0, 0, -12), Fx::from_num(3)).unwrap(),
+            ),
+            material: extreme_material(&mut rng, i + 1),
         })
         .unwrap();
         s.add_sphere(
-            Sphere::new(Vec3::from_ints(4, -1, -8), Fx::ONE).unwrap(),
-            hostile_material(&mut rng, i + 2),
+            Sphere::from_fx(Vec3::from_ints(4, -1, -8), Fx::ONE).unwrap(),
+            extreme_material(&mut rng, i + 2),
         )
         .unwrap();
         s.add_plane(
-            Plane::new(Vec3::from_ints(0, 0, -40), Vec3::Z).unwrap(),
-            hostile_material(&mut rng, i + 3),
+            Plane::from_fx(Vec3::from_ints(0, 0, -40), Vec3::Z).unwrap(),
+            extreme_material(&mut rng, i + 3),
         )
         .unwrap();
         s.set_shadows(i % 4 != 1);
@@ -587,13 +594,6 @@ fn hand_built_materials_lights_and_checkers_render_and_trace() {
                 );
             }
         }
-        let hit = Hit {
-            t: Fx::ONE,
-            point: hostile_vec(&mut rng, i),
-            normal: hostile_vec(&mut rng, i + 9),
-            object: i % 4,
-        };
-        let _ = s.shade(&camera.ray(6, 4), Some(&hit));
     }
 }
 
@@ -602,22 +602,24 @@ fn checkers_of_any_size_give_one_of_their_two_colours() {
     let mut rng = XorShift(0xc4ec_6e75_0000_0001);
     let (even, odd) = (Rgb::new(1, 1, 1), Rgb::new(2, 2, 2));
     for i in 0..20_000 {
-        let checker = Checker {
-            size: hostile(&mut rng, i),
-            other: odd,
+        let size = hostile(&mut rng, i);
+        let Ok(material) = Material::matte(even).with_checker_fx(size, odd) else {
+            assert!(size <= Fx::ZERO || size > LIMIT, "size {size} refused");
+            continue;
         };
+        let checker = material.checker().unwrap();
         let uv = [hostile(&mut rng, i + 1), hostile(&mut rng, i + 2)];
         let c = checker.colour_at(even, uv);
         assert!(c == even || c == odd);
-        if checker.size <= Fx::ZERO {
-            assert_eq!(c, even, "a square of no size is one colour");
-        }
     }
-    // The documented limit still tiles.
-    let big = Checker {
-        size: LIMIT,
-        other: odd,
-    };
-    assert_eq!(big.colour_at(even, [Fx::ZERO, Fx::ZERO]), even);
-    assert_eq!(big.colour_at(even, [-Fx::from_bits(1), Fx::ZERO]), odd);
+    // The documented limits still tile.
+    for size in [Fx::DELTA, LIMIT] {
+        let big = Material::matte(even)
+            .with_checker_fx(size, odd)
+            .unwrap()
+            .checker()
+            .unwrap();
+        assert_eq!(big.colour_at(even, [Fx::ZERO, Fx::ZERO]), even);
+        assert_eq!(big.colour_at(even, [-Fx::from_bits(1), Fx::ZERO]), odd);
+    }
 }

@@ -61,15 +61,15 @@ fn orbiting_views_equal_their_pixels_traced_one_by_one() {
 /// bit of their own for them.
 fn crowded<const N: usize>() -> fixray::Scene<N> {
     use fixray::{Fx, Light, Material, Plane, Sphere, Vec3};
-    let light = Light::new(Vec3::from_ints(-10, 20, 10), Fx::from_num(0.8)).unwrap();
+    let light = Light::from_fx(Vec3::from_ints(-10, 20, 10), Fx::from_num(0.8)).unwrap();
     let mut scene: fixray::Scene<N> =
-        fixray::Scene::new(light, Fx::from_num(0.2), Rgb::new(30, 60, 200)).unwrap();
+        fixray::Scene::new(light, 0.2, Rgb::new(30, 60, 200)).unwrap();
     let ball = |x: i16, y: i16, z: i16, r: f32| {
-        Sphere::new(Vec3::from_ints(x, y, z), Fx::from_num(r)).unwrap()
+        Sphere::from_fx(Vec3::from_ints(x, y, z), Fx::from_num(r)).unwrap()
     };
     scene
         .add_plane(
-            Plane::new(Vec3::from_ints(0, -4, 0), Vec3::Y).unwrap(),
+            Plane::from_fx(Vec3::from_ints(0, -4, 0), Vec3::Y).unwrap(),
             Rgb::new(120, 120, 120),
         )
         .unwrap();
@@ -82,7 +82,7 @@ fn crowded<const N: usize>() -> fixray::Scene<N> {
             .unwrap();
         i += 1;
     }
-    let mirror = Material::new(
+    let mirror = Material::from_fx(
         Rgb::WHITE,
         Fx::from_num(0.2),
         Fx::ONE,
@@ -126,7 +126,7 @@ fn scenes_past_64_objects_equal_their_pixels_traced_one_by_one() {
         for row in 0..camera.height() {
             for col in 0..camera.width() {
                 if let Some(hit) = scene.shoot(&camera.ray(col, row)) {
-                    seen[hit.object] = true;
+                    seen[hit.object()] = true;
                 }
             }
         }

@@ -6,6 +6,7 @@ use fixray::{
     Background, Camera, Fx, Light, Material, Plane, Ray, Rgb, Scene, Sphere, Vec3, render_row,
     render_row_supersampled,
 };
+use fixray_reference::ToF64;
 
 fn fx(x: f64) -> Fx {
     Fx::from_num(x)
@@ -24,13 +25,13 @@ const SKY: Rgb = Rgb::new(10, 20, 30);
 
 /// A floor at y = 0 lit straight from above, with a ball hanging between it and the light.
 fn shadow_scene() -> Scene<2> {
-    let light = Light::new(v(0.0, 100.0, 0.0), Fx::ONE).unwrap();
-    let mut scene = Scene::new(light, fx(0.25), SKY).unwrap();
+    let light = Light::from_fx(v(0.0, 100.0, 0.0), Fx::ONE).unwrap();
+    let mut scene = Scene::new(light, 0.25, SKY).unwrap();
     scene
-        .add_plane(Plane::new(Vec3::ZERO, Vec3::Y).unwrap(), GREY)
+        .add_plane(Plane::from_fx(Vec3::ZERO, Vec3::Y).unwrap(), GREY)
         .unwrap();
     scene
-        .add_sphere(Sphere::new(v(0.0, 5.0, 0.0), fx(1.0)).unwrap(), GREY)
+        .add_sphere(Sphere::from_fx(v(0.0, 5.0, 0.0), fx(1.0)).unwrap(), GREY)
         .unwrap();
     scene
 }
@@ -71,16 +72,19 @@ fn the_shadow_edge_lies_where_the_geometry_puts_it() {
 /// A checkerboard floor of unit squares, two dark colours that differ in each channel.
 fn checker_floor() -> Material {
     Material::matte(Rgb::new(100, 100, 100))
-        .with_checker(fx(1.0), Rgb::new(40, 80, 120))
+        .with_checker_fx(fx(1.0), Rgb::new(40, 80, 120))
         .unwrap()
 }
 
 #[test]
 fn checker_squares_alternate_at_the_expected_coordinates() {
-    let light = Light::new(v(0.0, 100.0, 0.0), Fx::ONE).unwrap();
-    let mut scene: Scene<1> = Scene::new(light, Fx::ZERO, SKY).unwrap();
+    let light = Light::from_fx(v(0.0, 100.0, 0.0), Fx::ONE).unwrap();
+    let mut scene: Scene<1> = Scene::new(light, 0.0, SKY).unwrap();
     scene
-        .add_plane(Plane::new(Vec3::ZERO, Vec3::Y).unwrap(), checker_floor())
+        .add_plane(
+            Plane::from_fx(Vec3::ZERO, Vec3::Y).unwrap(),
+            checker_floor(),
+        )
         .unwrap();
     let down = |x: f64, z: f64| scene.trace(&ray(v(x, 1.0, z), v(x, 0.0, z)));
     // Square (⌊x⌋, ⌊z⌋): even sum → the material colour, odd → the other. Lit straight from
@@ -108,11 +112,11 @@ fn checker_squares_alternate_at_the_expected_coordinates() {
 
 #[test]
 fn a_bounded_floor_ends_at_its_edges() {
-    let light = Light::new(v(0.0, 100.0, 0.0), Fx::ONE).unwrap();
-    let mut scene: Scene<1> = Scene::new(light, Fx::ZERO, SKY).unwrap();
-    let floor = Plane::new(Vec3::ZERO, Vec3::Y)
+    let light = Light::from_fx(v(0.0, 100.0, 0.0), Fx::ONE).unwrap();
+    let mut scene: Scene<1> = Scene::new(light, 0.0, SKY).unwrap();
+    let floor = Plane::from_fx(Vec3::ZERO, Vec3::Y)
         .unwrap()
-        .bounded([fx(-10.0), fx(-30.0)], [fx(10.0), fx(-10.0)])
+        .bounded([-10.0, -30.0], [10.0, -10.0])
         .unwrap();
     scene.add_plane(floor, GREY).unwrap();
     let down = |x: f64, z: f64| scene.trace(&ray(v(x, 1.0, z), v(x, 0.0, z)));
@@ -128,17 +132,17 @@ fn a_mirror_shows_the_checkerboard() {
     // A perfect black mirror wall at z = −5 facing +z, above a checkerboard floor at y = −1.
     // Reflection in z = −5 maps z to −10 − z, so a ray from (x, 0, 0) aimed at (x, −1, −9.5)
     // is, after the mirror, the ray that meets the floor at (x, −1, −0.5).
-    let light = Light::new(v(0.0, 50.0, 2.0), Fx::ONE).unwrap();
-    let mut scene: Scene<2> = Scene::new(light, Fx::ZERO, SKY).unwrap();
+    let light = Light::from_fx(v(0.0, 50.0, 2.0), Fx::ONE).unwrap();
+    let mut scene: Scene<2> = Scene::new(light, 0.0, SKY).unwrap();
     scene
         .add_plane(
-            Plane::new(v(0.0, -1.0, 0.0), Vec3::Y).unwrap(),
+            Plane::from_fx(v(0.0, -1.0, 0.0), Vec3::Y).unwrap(),
             checker_floor(),
         )
         .unwrap();
-    let mirror = Material::new(Rgb::BLACK, Fx::ZERO, Fx::ZERO, 1, Fx::ONE).unwrap();
+    let mirror = Material::from_fx(Rgb::BLACK, Fx::ZERO, Fx::ZERO, 1, Fx::ONE).unwrap();
     scene
-        .add_plane(Plane::new(v(0.0, 0.0, -5.0), Vec3::Z).unwrap(), mirror)
+        .add_plane(Plane::from_fx(v(0.0, 0.0, -5.0), Vec3::Z).unwrap(), mirror)
         .unwrap();
     for x in [0.5, 1.5, -0.5, 2.5] {
         let in_mirror = scene.trace(&ray(v(x, 0.0, 0.0), v(x, -1.0, -9.5)));
@@ -176,13 +180,13 @@ fn the_highlight_lies_where_the_half_vector_meets_the_normal() {
     // Only a dim specular term (no diffuse, no ambient, no clamping), so brightness rises
     // with n·h alone. The light is up and to the right of the eye.
     let light_at = [6.0, 8.0, 0.0];
-    let light = Light::new(v(light_at[0], light_at[1], light_at[2]), Fx::ONE).unwrap();
-    let mut scene: Scene<1> = Scene::new(light, Fx::ZERO, Rgb::BLACK).unwrap();
+    let light = Light::from_fx(v(light_at[0], light_at[1], light_at[2]), Fx::ONE).unwrap();
+    let mut scene: Scene<1> = Scene::new(light, 0.0, Rgb::BLACK).unwrap();
     let centre = [0.0, 0.0, -10.0];
-    let shiny = Material::new(Rgb::WHITE, Fx::ZERO, fx(0.5), 50, Fx::ZERO).unwrap();
+    let shiny = Material::from_fx(Rgb::WHITE, Fx::ZERO, fx(0.5), 50, Fx::ZERO).unwrap();
     scene
         .add_sphere(
-            Sphere::new(v(centre[0], centre[1], centre[2]), fx(2.0)).unwrap(),
+            Sphere::from_fx(v(centre[0], centre[1], centre[2]), fx(2.0)).unwrap(),
             shiny,
         )
         .unwrap();
@@ -210,7 +214,7 @@ fn the_highlight_lies_where_the_half_vector_meets_the_normal() {
         render_row(&scene, &camera, y, &mut row).unwrap();
         for (x, pixel) in row.iter().enumerate() {
             if let Some(hit) = scene.shoot(&camera.ray(x as u32, y)) {
-                let nh = n_dot_h(hit.point.to_f64());
+                let nh = n_dot_h(hit.point().to_f64());
                 best_nh = best_nh.max(nh);
                 if pixel.r > brightest.0 || (pixel.r == brightest.0 && nh > brightest.1) {
                     brightest = (pixel.r, nh);
@@ -233,12 +237,12 @@ fn the_highlight_lies_where_the_half_vector_meets_the_normal() {
 
 #[test]
 fn a_gradient_background_runs_from_bottom_to_top() {
-    let light = Light::new(Vec3::ZERO, Fx::ONE).unwrap();
+    let light = Light::from_fx(Vec3::ZERO, Fx::ONE).unwrap();
     let sky = Background {
         top: Rgb::new(0, 0, 255),
         bottom: Rgb::new(200, 100, 0),
     };
-    let scene: Scene<1> = Scene::new(light, Fx::ZERO, sky).unwrap();
+    let scene: Scene<1> = Scene::new(light, 0.0, sky).unwrap();
     let look = |d: Vec3| scene.trace(&Ray::new(Vec3::ZERO, d).unwrap());
     assert_eq!(look(Vec3::Y), Rgb::new(0, 0, 255));
     assert_eq!(look(-Vec3::Y), Rgb::new(200, 100, 0));
@@ -250,13 +254,13 @@ fn a_gradient_background_runs_from_bottom_to_top() {
 fn supersampling_blends_an_edge() {
     // A white wall covering the left half of the view, on black: the pixel column straddling
     // the edge gets a mixture; columns away from it do not change.
-    let light = Light::new(v(0.0, 0.0, 10.0), Fx::ONE).unwrap();
-    let mut scene: Scene<1> = Scene::new(light, Fx::ONE, Rgb::BLACK).unwrap();
+    let light = Light::from_fx(v(0.0, 0.0, 10.0), Fx::ONE).unwrap();
+    let mut scene: Scene<1> = Scene::new(light, 1.0, Rgb::BLACK).unwrap();
     // x = 0 plane facing +x: a wall seen edge-on? Use a sphere edge instead: a big sphere
     // whose rim crosses the middle column.
     scene
         .add_sphere(
-            Sphere::new(v(-50.0, 0.0, -100.0), fx(50.0)).unwrap(),
+            Sphere::from_fx(v(-50.0, 0.0, -100.0), fx(50.0)).unwrap(),
             Rgb::WHITE,
         )
         .unwrap();
@@ -279,31 +283,23 @@ fn supersampling_blends_an_edge() {
 }
 
 #[test]
-fn materials_and_lights_built_by_hand_out_of_range_do_not_panic() {
-    // Material, Checker and Light have public fields, so a caller can skip their checked
-    // constructors: huge weights saturate to white, a checker of no size is one colour.
-    let light = Light {
-        position: v(0.0, 100.0, 0.0),
-        intensity: Fx::MAX,
-    };
-    let mut scene: Scene<2, 4> = Scene::new(light, Fx::ONE, SKY).unwrap();
-    scene.add_light(light).unwrap();
-    let wild = Material {
-        colour: Rgb::new(10, 20, 30),
-        diffuse: Fx::MAX,
-        specular: Fx::MAX,
-        shininess: 0,
-        reflect: Fx::MAX,
-        checker: Some(fixray::Checker {
-            size: Fx::ZERO,
-            other: Rgb::BLACK,
-        }),
-    };
-    scene
-        .add_plane(Plane::new(v(0.0, -1.0, 0.0), Vec3::Y).unwrap(), wild)
+fn materials_and_lights_at_their_limits_saturate_without_panicking() {
+    // Every weight at the top of its range, four of the brightest lights, the sharpest
+    // checker: the sums saturate to white rather than wrap.
+    let light = Light::new([0.0, 100.0, 0.0], 4.0).unwrap();
+    let mut scene: Scene<2, 4> = Scene::new(light, 1.0, SKY).unwrap();
+    for _ in 0..3 {
+        scene.add_light(light).unwrap();
+    }
+    let wild = Material::new(Rgb::new(10, 20, 30), 2.0, 16.0, 1, 1.0)
+        .unwrap()
+        .with_checker_fx(Fx::DELTA, Rgb::BLACK)
         .unwrap();
     scene
-        .add_sphere(Sphere::new(v(0.0, 2.0, -5.0), fx(1.0)).unwrap(), wild)
+        .add_plane(Plane::from_fx(v(0.0, -1.0, 0.0), Vec3::Y).unwrap(), wild)
+        .unwrap();
+    scene
+        .add_sphere(Sphere::from_fx(v(0.0, 2.0, -5.0), fx(1.0)).unwrap(), wild)
         .unwrap();
     let camera = Camera::pinhole(2.0, 2.0, 1.0)
         .size(Size::new(8, 8))

@@ -99,6 +99,19 @@ impl<F: Real> From<fixray::Vec3> for DVec3<F> {
     }
 }
 
+/// A fixed vector's components as `f64`, exactly: for comparing fixray's numbers with the
+/// reference's.
+pub trait ToF64 {
+    /// The components, `[x, y, z]`.
+    fn to_f64(self) -> [f64; 3];
+}
+
+impl ToF64 for fixray::Vec3 {
+    fn to_f64(self) -> [f64; 3] {
+        [self.x.to_num(), self.y.to_num(), self.z.to_num()]
+    }
+}
+
 impl<F: Real> Add for DVec3<F> {
     type Output = Self;
     #[inline]

@@ -99,35 +99,36 @@ impl<const N: usize, const L: usize, F: Real> DScene<N, L, F> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use fixray::{Background, Light, Material, Object, Plane, Rgb, Scene, Shape, Sphere, Vec3};
+    use fixray::{Background, Light, Material, Object, Plane, Rgb, Scene, Shape, Sphere};
 
     #[test]
     fn the_twin_has_the_same_objects_lights_and_settings() {
         let fx = Fx::from_num::<f64>;
-        let light = Light::new_unchecked(Vec3::from_ints(-20, 20, 20), fx(0.8));
+        let light = Light::new([-20.0, 20.0, 20.0], 0.8).unwrap();
         let sky = Background {
             top: Rgb::new(1, 2, 3),
             bottom: Rgb::new(4, 5, 6),
         };
-        let mut scene: Scene<3, 2> = Scene::new(light, fx(0.2), sky).unwrap();
+        let mut scene: Scene<3, 2> = Scene::new(light, 0.2, sky).unwrap();
         scene
-            .add_light(Light::new_unchecked(Vec3::from_ints(5, 5, 5), fx(3.5)))
+            .add_light(Light::new([5.0, 5.0, 5.0], 3.5).unwrap())
             .unwrap();
         scene.set_shadows(false);
         scene.set_depth(7);
-        let ball = Sphere::new_unchecked(Vec3::new(fx(1.5), fx(-0.5), fx(-18.0)), fx(3.0));
-        let shiny = Material::new(Rgb::WHITE, fx(0.6), fx(0.3), 50, fx(0.1)).unwrap();
+        let ball = Sphere::new([1.5, -0.5, -18.0], 3.0).unwrap();
+        let shiny = Material::new(Rgb::WHITE, 0.6, 0.3, 50, 0.1).unwrap();
         scene
             .add(Object {
                 shape: Shape::Sphere(ball),
                 material: shiny,
             })
             .unwrap();
-        let ground = Plane::new_unchecked(Vec3::from_ints(0, -4, 0), Vec3::Y)
-            .bounded([fx(-10.0), fx(-30.0)], [fx(10.0), fx(-10.25)])
+        let ground = Plane::new([0.0, -4.0, 0.0], [0.0, 1.0, 0.0])
+            .unwrap()
+            .bounded([-10.0, -30.0], [10.0, -10.25])
             .unwrap();
         let board = Material::matte(Rgb::BLACK)
-            .with_checker(fx(1.5), Rgb::new(7, 8, 9))
+            .with_checker(1.5, Rgb::new(7, 8, 9))
             .unwrap();
         scene.add_plane(ground, board).unwrap();
 
@@ -136,7 +137,7 @@ mod tests {
         assert_eq!(
             twin.lights(),
             [
-                DLight::new(DVec3::new(-20.0, 20.0, 20.0), fx(0.8).to_num()),
+                DLight::new(DVec3::new(-20.0, 20.0, 20.0), Fx::from_num(0.8f32).to_num()),
                 DLight::new(DVec3::new(5.0, 5.0, 5.0), 3.5),
             ]
         );

@@ -87,7 +87,7 @@ pub use dplane::DPlane;
 pub use dray::DRay;
 pub use dscene::DScene;
 pub use dsphere::DSphere;
-pub use dvec3::DVec3;
+pub use dvec3::{DVec3, ToF64};
 pub use real::Real;
 pub use render::{render, render_row, render_row_supersampled};
 

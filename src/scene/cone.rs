@@ -102,7 +102,8 @@ mod tests {
     #[test]
     fn the_cone_holds_the_sphere_and_little_else() {
         let light = Vec3::from_ints(0, 100, 0);
-        let ball = Shape::Sphere(Sphere::new(Vec3::from_ints(0, 50, 0), Fx::from_num(5)).unwrap());
+        let ball =
+            Shape::Sphere(Sphere::from_fx(Vec3::from_ints(0, 50, 0), Fx::from_num(5)).unwrap());
         let cone = ShadowCone::new(light, &ball);
         let towards_light = |from: Vec3| {
             let v = light - from;

@@ -3,15 +3,15 @@ use crate::geometry::ray::Ray;
 use crate::numbers::vec3::Vec3;
 
 fn lit_from_above() -> Scene<4> {
-    let light = Light::new(Vec3::from_ints(0, 100, 0), Fx::from_num(0.75)).unwrap();
-    Scene::new(light, Fx::from_num(0.25), Rgb::new(1, 2, 3)).unwrap()
+    let light = Light::from_fx(Vec3::from_ints(0, 100, 0), Fx::from_num(0.75)).unwrap();
+    Scene::new(light, 0.25, Rgb::new(1, 2, 3)).unwrap()
 }
 
 #[test]
 fn nearest_object_wins_whatever_the_order() {
     let mut scene = lit_from_above();
-    let far = Sphere::new(Vec3::from_ints(0, 0, -20), Fx::from_num(2)).unwrap();
-    let near = Sphere::new(Vec3::from_ints(0, 0, -10), Fx::from_num(2)).unwrap();
+    let far = Sphere::from_fx(Vec3::from_ints(0, 0, -20), Fx::from_num(2)).unwrap();
+    let near = Sphere::from_fx(Vec3::from_ints(0, 0, -10), Fx::from_num(2)).unwrap();
     scene.add_sphere(far, Rgb::WHITE).unwrap();
     let near_index = scene.add_sphere(near, Rgb::WHITE).unwrap();
     let hit = scene
@@ -23,15 +23,15 @@ fn nearest_object_wins_whatever_the_order() {
 #[test]
 fn lambert_shading_follows_the_angle_to_the_light() {
     let mut scene = lit_from_above();
-    let ground = Plane::new(Vec3::from_ints(0, -4, 0), Vec3::Y).unwrap();
+    let ground = Plane::from_fx(Vec3::from_ints(0, -4, 0), Vec3::Y).unwrap();
     scene.add_plane(ground, Rgb::new(200, 100, 0)).unwrap();
     // Straight below the light: n·l = 1, so k = 0.25 + 0.75 = 1.
     let down = Ray::new(Vec3::ZERO, -Vec3::Y).unwrap();
     assert_eq!(scene.trace(&down), Rgb::new(200, 100, 0));
     // A wall lit from behind gets only the ambient quarter.
-    let behind = Light::new(Vec3::from_ints(0, 0, -100), Fx::from_num(0.75)).unwrap();
-    let mut dark: Scene<1> = Scene::new(behind, Fx::from_num(0.25), Rgb::BLACK).unwrap();
-    let wall = Plane::new(Vec3::from_ints(0, 0, -5), Vec3::Z).unwrap();
+    let behind = Light::from_fx(Vec3::from_ints(0, 0, -100), Fx::from_num(0.75)).unwrap();
+    let mut dark: Scene<1> = Scene::new(behind, 0.25, Rgb::BLACK).unwrap();
+    let wall = Plane::from_fx(Vec3::from_ints(0, 0, -5), Vec3::Z).unwrap();
     dark.add_plane(wall, Rgb::new(200, 100, 0)).unwrap();
     assert_eq!(
         dark.trace(&Ray::new(Vec3::ZERO, -Vec3::Z).unwrap()),
@@ -50,9 +50,9 @@ fn misses_show_the_background() {
 
 #[test]
 fn ambient_outside_zero_to_one_is_refused() {
-    let light = Light::new(Vec3::ZERO, Fx::ONE).unwrap();
+    let light = Light::from_fx(Vec3::ZERO, Fx::ONE).unwrap();
     assert_eq!(
-        Scene::<1>::new(light, Fx::from_num(1.5), Rgb::BLACK).map(|_| ()),
+        Scene::<1>::new(light, 1.5, Rgb::BLACK).map(|_| ()),
         Err(Error::OutOfRange {
             quantity: Quantity::Ambient,
             min: Fx::ZERO,

@@ -8,6 +8,7 @@
 //! and the chapter's formulas for the camera.
 #![allow(dead_code)] // each user of this module calls a different part of it
 
+use fixray_reference::ToF64;
 use std::collections::HashMap;
 
 use embedded_graphics::pixelcolor::{BinaryColor, Gray8, PixelColor, Rgb565, Rgb888};
@@ -15,8 +16,8 @@ use embedded_graphics::prelude::{DrawTarget, OriginDimensions, Pixel, Point, Siz
 use embedded_graphics::primitives::Rectangle;
 use fixray::draw::{self, Viewport};
 use fixray::{
-    Background, Camera, Error, FAR, Framebuffer, Fx, Hit, LIMIT, Light, Material, Object, Plane,
-    Ray, Rgb, Scene, Shape, Sphere, Vec3,
+    Background, Camera, Error, FAR, Framebuffer, Fx, LIMIT, Light, Material, Object, Plane, Ray,
+    Rgb, Scene, SceneHit, Shape, Sphere, Vec3,
 };
 
 /// One unit of Q16.16.
@@ -210,7 +211,7 @@ fn material(src: &mut impl Source) -> Material {
     }
     let m = match src.below(4) {
         0 => Material::matte(colour),
-        1 => Material::new(
+        1 => Material::from_fx(
             colour,
             weight(src, 2.0),
             weight(src, 16.0),
@@ -218,7 +219,7 @@ fn material(src: &mut impl Source) -> Material {
             Fx::ZERO,
         )
         .expect("weights drawn inside their documented ranges"),
-        _ => Material::new(
+        _ => Material::from_fx(
             colour,
             weight(src, 2.0),
             weight(src, 16.0),
@@ -233,7 +234,7 @@ fn material(src: &mut impl Source) -> Material {
     };
     if src.one_in(4) {
         let size = src.pick(&[Fx::from_bits(1), Fx::from_num(0.5), Fx::from_num(2), LIMIT]);
-        m.with_checker(size, rgb(src))
+        m.with_checker_fx(size, rgb(src))
             .expect("checker size drawn inside its documented range")
     } else {
         m
@@ -255,7 +256,7 @@ fn sphere(src: &mut impl Source, view: View) -> Sphere {
         let spread = vec_within(src, 10.0);
         (view.eye + view.forward.scale(along) + spread).clamp_limit()
     };
-    Sphere::new(centre, radius).expect("centre and radius drawn inside the limits")
+    Sphere::from_fx(centre, radius).expect("centre and radius drawn inside the limits")
 }
 
 /// A plane through a point near the view, possibly bounded.
@@ -267,7 +268,7 @@ fn plane(src: &mut impl Source, view: View) -> Plane {
             break n;
         }
     };
-    let plane = Plane::new(point, normal).expect("point inside the limits, normal non-zero");
+    let plane = Plane::from_fx(point, normal).expect("point inside the limits, normal non-zero");
     if src.one_in(3) {
         let (a, b) = (
             Fx::from_num(src.uniform(30.0)),
@@ -280,7 +281,7 @@ fn plane(src: &mut impl Source, view: View) -> Plane {
         let lo = [a.min(b), c.min(d)];
         let hi = [a.max(b) + Fx::from_bits(1), c.max(d) + Fx::from_bits(1)];
         plane
-            .bounded(lo, hi)
+            .bounded_fx(lo, hi)
             .expect("bounds inside the limits, min below max")
     } else {
         plane
@@ -310,7 +311,7 @@ pub fn world(src: &mut impl Source, view: View, count: usize, crowded: bool) -> 
         for i in 0..hidden.min(count) {
             let behind = view.eye - view.forward.scale(Fx::from_num(30 + (i % 7) as i32));
             let centre = (behind + vec_within(src, 5.0)).clamp_limit();
-            let s = Sphere::new(centre, Fx::from_num(0.25)).expect("inside the limits");
+            let s = Sphere::from_fx(centre, Fx::from_num(0.25)).expect("inside the limits");
             objects.push(Object {
                 shape: Shape::Sphere(s),
                 material: material(src),
@@ -319,15 +320,15 @@ pub fn world(src: &mut impl Source, view: View, count: usize, crowded: bool) -> 
     }
     if src.one_in(6) {
         let shape = if src.one_in(2) {
-            Shape::Plane(Plane::new(view.eye, direction_non_zero(src)).expect("valid"))
+            Shape::Plane(Plane::from_fx(view.eye, direction_non_zero(src)).expect("valid"))
         } else {
             // An axis-aligned offset of exactly r: the eye lies exactly on the surface.
             let r = Fx::from_num(0.5 + src.uniform(50.0).abs());
             let axis = src.pick(&[Vec3::X, Vec3::Y, Vec3::Z, -Vec3::X, -Vec3::Y, -Vec3::Z]);
             let centre = view.eye + axis.scale(r);
-            match Sphere::new(centre, r) {
+            match Sphere::from_fx(centre, r) {
                 Ok(s) => Shape::Sphere(s),
-                Err(_) => Shape::Plane(Plane::new(view.eye, axis).expect("valid")),
+                Err(_) => Shape::Plane(Plane::from_fx(view.eye, axis).expect("valid")),
             }
         };
         objects.push(Object {
@@ -350,7 +351,7 @@ pub fn world(src: &mut impl Source, view: View, count: usize, crowded: bool) -> 
         .map(|_| {
             let position = (view.eye + vec_within(src, 60.0)).clamp_limit();
             let intensity = Fx::from_num(src.uniform(4.0).abs());
-            Light::new(position, intensity).expect("inside the limits")
+            Light::from_fx(position, intensity).expect("inside the limits")
         })
         .collect();
     let background = if src.one_in(2) {
@@ -394,9 +395,9 @@ impl World {
         lights: &[Light],
         shadows: bool,
     ) -> Option<Scene<N>> {
-        let dark = Light::new(Vec3::ZERO, Fx::ZERO).expect("valid");
+        let dark = Light::from_fx(Vec3::ZERO, Fx::ZERO).expect("valid");
         let first = lights.first().copied().unwrap_or(dark);
-        let mut scene = Scene::<N>::new(first, self.ambient, self.background)
+        let mut scene = Scene::<N>::from_fx(first, self.ambient, self.background)
             .expect("ambient drawn within 0..=1");
         for light in lights.iter().skip(1) {
             scene.add_light(*light).expect("at most four lights");
@@ -838,9 +839,9 @@ pub fn check_rays(spec: &CameraSpec, camera: &Camera, pixels: &[(u32, u32)]) {
     for &(col, row) in pixels {
         let ray = camera.ray(col, row);
         let (exact, f, sin) = spec.exact_ray(camera, col as f64, row as f64);
-        let got = ray.dir.to_f64();
+        let got = ray.dir().to_f64();
         assert_eq!(
-            ray.origin,
+            ray.origin(),
             camera.eye(),
             "ray({col}, {row}) leaves from the eye"
         );
@@ -848,7 +849,7 @@ pub fn check_rays(spec: &CameraSpec, camera: &Camera, pixels: &[(u32, u32)]) {
         assert!(
             (len - 1.0).abs() <= UNIT_TOLERANCE,
             "ray({col}, {row}) of {spec:?}: |dir| = {len} (dir {:?})",
-            ray.dir
+            ray.dir()
         );
         // Where the pixel-unit direction's components may not fit Q16.16 (beyond 2¹⁵ pixels),
         // only the side of the view is promised: the ray must not wrap to the other side.
@@ -864,14 +865,14 @@ pub fn check_rays(spec: &CameraSpec, camera: &Camera, pixels: &[(u32, u32)]) {
                 angle <= allowed,
                 "ray({col}, {row}) of {spec:?} is {angle} rad off the exact camera's \
                  (allowed {allowed}; dir {:?}, exact {exact:?})",
-                ray.dir
+                ray.dir()
             );
         } else {
             assert!(
                 dot(got, exact) > 0.0,
                 "ray({col}, {row}) of {spec:?} looks away from the exact camera's ray: \
                  dir {:?}, exact {exact:?}",
-                ray.dir
+                ray.dir()
             );
         }
         // The supersampling ray at n = 1 (or 0, clamped to 1) is the pixel's ray.
@@ -898,7 +899,8 @@ pub fn check_rays(spec: &CameraSpec, camera: &Camera, pixels: &[(u32, u32)]) {
 /// `Scene::shoot` against every object tried by brute force.
 ///
 /// Unit normal, the tolerance: a plane's normal is its own, normalised at construction, so
-/// within [`UNIT_TOLERANCE`] (√3 units of 2⁻¹⁶) of unit length. A sphere's is `(x − c)/r` at
+/// within [`UNIT_TOLERANCE`] (√3 units of 2⁻¹⁶) of unit length, turned to face the ray. A
+/// sphere's is `(x − c)/r`, turned likewise, at
 /// the rounded hit point `x`: each component within one unit of the exact quotient (a product
 /// by a reciprocal good to 2⁻³⁰, rounded to nearest), and `‖x − c‖` itself off `r` by the hit
 /// point's distance from the surface: half a unit a component for rounding `x` (√3/2), the
@@ -907,11 +909,11 @@ pub fn check_rays(spec: &CameraSpec, camera: &Camera, pixels: &[(u32, u32)]) {
 /// (within 2√3 units of 2⁻¹⁶ of 1 in its square) over the distance travelled, at most
 /// `3.5·t` units. Divided by `r`, the relative error of the normal's length is at most
 /// `2⁻¹⁶ · (√3 + 2 + (1 + 4.5·t)/r)`.
-pub fn check_hit<const N: usize>(scene: &Scene<N>, ray: &Ray, hit: Option<Hit>) {
+pub fn check_hit<const N: usize>(scene: &Scene<N>, ray: &Ray, hit: Option<SceneHit>) {
     // The nearest hit by brute force; ties go to the object added first.
     let mut best: Option<(Fx, usize)> = None;
     for (i, object) in scene.objects().iter().enumerate() {
-        if let Some(t) = object.shape.hit_distance(ray)
+        if let Some(t) = object.shape.intersect(ray).map(|h| h.t())
             && best.is_none_or(|(b, _)| t < b)
         {
             best = Some((t, i));
@@ -925,35 +927,35 @@ pub fn check_hit<const N: usize>(scene: &Scene<N>, ray: &Ray, hit: Option<Hit>) 
         return;
     };
     assert_eq!(
-        Some((hit.t, hit.object)),
+        Some((hit.t(), hit.object())),
         best,
         "shoot's hit is not the nearest for {ray:?}"
     );
     assert!(
-        hit.t >= Fx::ZERO && hit.t <= FAR,
+        hit.t() >= Fx::ZERO && hit.t() <= FAR,
         "hit distance {} outside [0, FAR] for {ray:?}",
-        hit.t
+        hit.t()
     );
-    let expect = ray.at(hit.t);
+    let expect = ray.at(hit.t());
     for (p, q) in [
-        (hit.point.x, expect.x),
-        (hit.point.y, expect.y),
-        (hit.point.z, expect.z),
+        (hit.point().x, expect.x),
+        (hit.point().y, expect.y),
+        (hit.point().z, expect.z),
     ] {
         assert!(
             (p.to_bits() as i64 - q.to_bits() as i64).abs() <= 1,
             "hit point {:?} is not origin + t·dir = {expect:?}",
-            hit.point
+            hit.point()
         );
     }
-    let object = &scene.objects()[hit.object];
-    let n = hit.normal.to_f64();
+    let object = &scene.objects()[hit.object()];
+    let n = hit.normal().to_f64();
     match object.shape {
         Shape::Plane(plane) => {
             assert!(
-                hit.normal == plane.normal() || hit.normal == -plane.normal(),
+                hit.normal() == plane.normal() || hit.normal() == -plane.normal(),
                 "plane hit normal {:?} is not ±{:?}",
-                hit.normal,
+                hit.normal(),
                 plane.normal()
             );
             let len = norm(n);
@@ -961,20 +963,37 @@ pub fn check_hit<const N: usize>(scene: &Scene<N>, ray: &Ray, hit: Option<Hit>) 
                 (len - 1.0).abs() <= UNIT_TOLERANCE,
                 "plane normal length {len} for {ray:?}"
             );
+            let d = ray.dir().to_f64();
+            assert!(
+                n[0] * d[0] + n[1] * d[1] + n[2] * d[2] < 0.0,
+                "plane normal {:?} does not face {ray:?}",
+                hit.normal()
+            );
         }
         Shape::Sphere(sphere) => {
             let r = sphere.radius().to_num::<f64>();
-            let v = sub(hit.point.to_f64(), sphere.centre().to_f64());
+            let v = sub(hit.point().to_f64(), sphere.centre().to_f64());
+            // The normal faces the ray: outward from outside, inward from inside. Where the
+            // ray grazes the surface the side is a matter of rounding; the normal given says
+            // which, and must be (x − c)/r on that side.
+            let d = ray.dir().to_f64();
+            let along = v[0] * d[0] + v[1] * d[1] + v[2] * d[2];
+            let side = if along.abs() > 1e-3 * r {
+                -along.signum()
+            } else {
+                n[0] * v[0] + n[1] * v[1] + n[2] * v[2]
+            }
+            .signum();
             for axis in 0..3 {
-                let exact = (v[axis] / r).clamp(-1.0, 1.0);
+                let exact = side * (v[axis] / r).clamp(-1.0, 1.0);
                 assert!(
                     (n[axis] - exact).abs() <= ULP,
-                    "sphere normal {:?} is not (x − c)/r = {:?} within one unit",
-                    hit.normal,
-                    v.map(|c| c / r)
+                    "sphere normal {:?} is not ±(x − c)/r = {:?} on the ray's side within one unit",
+                    hit.normal(),
+                    v.map(|c| side * c / r)
                 );
             }
-            let t = hit.t.to_num::<f64>();
+            let t = hit.t().to_num::<f64>();
             let allowed = ULP * (1.732_050_808 + 2.0 + (1.0 + 4.5 * t) / r);
             let len = norm(n);
             assert!(
@@ -994,10 +1013,10 @@ pub fn check_surface_through_origin<const N: usize>(scene: &Scene<N>, ray: &Ray)
     let r = |v: Fx| v.to_bits() as i128;
     let dot = |a: Vec3, b: Vec3| r(a.x) * r(b.x) + r(a.y) * r(b.y) + r(a.z) * r(b.z);
     for (i, object) in scene.objects().iter().enumerate() {
-        let t = object.shape.hit_distance(ray);
+        let t = object.shape.intersect(ray).map(|h| h.t());
         match object.shape {
             Shape::Plane(plane) => {
-                if dot(plane.normal(), ray.origin - plane.point()) == 0 {
+                if dot(plane.normal(), ray.origin() - plane.point()) == 0 {
                     assert_eq!(
                         t, None,
                         "object {i}, a plane through the ray's origin, is hit by {ray:?}"
@@ -1005,8 +1024,8 @@ pub fn check_surface_through_origin<const N: usize>(scene: &Scene<N>, ray: &Ray)
                 }
             }
             Shape::Sphere(sphere) => {
-                let v = ray.origin - sphere.centre();
-                if dot(v, v) == r(sphere.radius()) * r(sphere.radius()) && dot(ray.dir, v) >= 0 {
+                let v = ray.origin() - sphere.centre();
+                if dot(v, v) == r(sphere.radius()) * r(sphere.radius()) && dot(ray.dir(), v) >= 0 {
                     assert_eq!(
                         t, None,
                         "object {i}, a sphere through the ray's origin, is hit by {ray:?} \
@@ -1157,7 +1176,7 @@ pub fn check_supersampled<const N: usize>(
         for sy in 0..n {
             for sx in 0..n {
                 let ray = camera.sample_ray(col, row, sx, sy, n);
-                let length = length(ray.dir);
+                let length = length(ray.dir());
                 assert!((length - 1.0).abs() <= UNIT_TOLERANCE, "sample ray {ray:?}");
                 let c = scene.trace(&ray);
                 sum = [
@@ -1200,7 +1219,7 @@ pub fn check_shadows<const N: usize>(world: &World, camera: &Camera, row: u32) {
         let Some(hit) = scene.shoot(&ray) else {
             continue;
         };
-        if scene.objects()[hit.object].material.reflect != Fx::ZERO {
+        if scene.objects()[hit.object()].material.reflect() != Fx::ZERO {
             continue;
         }
         let mut mask = 0u32;
@@ -1228,17 +1247,17 @@ pub fn check_shadows<const N: usize>(world: &World, camera: &Camera, row: u32) {
 }
 
 /// Whether anything but the object `hit` is on lies between it and `light`, by brute force.
-pub fn occluded<const N: usize>(scene: &Scene<N>, hit: &Hit, light: &Light) -> bool {
-    let to_light = light.position - hit.point;
+pub fn occluded<const N: usize>(scene: &Scene<N>, hit: &SceneHit, light: &Light) -> bool {
+    let to_light = light.position() - hit.point();
     let distance_squared = to_light.length_squared_wide();
-    let Some(l) = to_light.try_normalize() else {
+    // The shadow ray's direction is `to_light` normalised, as the renderer's is.
+    let Ok(shadow) = Ray::new(hit.point(), to_light) else {
         return false; // a light at the hit point: it lights nothing there either way
     };
-    let shadow = Ray::new_unchecked(hit.point, l);
     scene.objects().iter().enumerate().any(|(i, object)| {
-        i != hit.object
-            && object.shape.hit_distance(&shadow).is_some_and(|t| {
-                let t = t.to_bits() as u32 as u64;
+        i != hit.object()
+            && object.shape.intersect(&shadow).is_some_and(|hit| {
+                let t = hit.t().to_bits() as u32 as u64;
                 t * t < distance_squared
             })
     })

@@ -66,11 +66,11 @@ impl Accuracy {
                 let hit = scene.shoot(&ray);
                 let seen = scene.shade(&ray, hit.as_ref());
                 let (dhit, dseen) = dscene.trace(&dcamera.ray(col, row));
-                let same = hit.map(|h| h.object) == dhit.map(|h| h.object);
+                let same = hit.map(|h| h.object()) == dhit.map(|h| h.object);
                 acc.add(seen, dseen, same);
                 each(row, col, seen, dseen);
                 if let (Some(h), Some(d), true) = (hit, dhit, same) {
-                    let dt = (h.t.to_num::<f64>() - d.t).abs();
+                    let dt = (h.t().to_num::<f64>() - d.t).abs();
                     acc.max_dt = acc.max_dt.max(dt);
                     if d.t > 0.0 {
                         acc.max_dt_relative = acc.max_dt_relative.max(dt / d.t);

@@ -10,7 +10,7 @@ fn chapter_screen_pixel_centres() {
         .unwrap();
     for i in 0..3u32 {
         for j in 0..5u32 {
-            let expect = Vec3::from_f32(
+            let expect = crate::check::f32_point(
                 [-2.5 + (j as f32 + 0.5), -1.5 + (i as f32 + 0.5), -1.0],
                 Quantity::PlanePoint,
             )
