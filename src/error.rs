@@ -12,15 +12,15 @@ use crate::numbers::fx::{Fx, LIMIT};
 /// one refusal from another without reading its message.
 ///
 /// ```
-/// use fixray::{CameraProblem, Error, Fx, LIMIT, Light, Quantity, Vec3};
-/// let dim = Light::new(Vec3::ZERO, Fx::from_num(5));
+/// use fixray::{CameraProblem, Error, Fx, LIMIT, Light, Quantity};
+/// let dim = Light::new([0.0; 3], 5.0);
 /// assert_eq!(
 ///     dim,
 ///     Err(Error::OutOfRange { quantity: Quantity::LightIntensity, min: Fx::ZERO, max: Fx::from_num(4) })
 /// );
 /// assert_eq!(dim.unwrap_err().to_string(), "light intensity is outside 0 to 4");
 ///
-/// let far = Light::new(Vec3::from_ints(0, 2000, 0), Fx::ONE).unwrap_err();
+/// let far = Light::new([0.0, 2000.0, 0.0], 1.0).unwrap_err();
 /// assert_eq!(far.to_string(), "light position is outside the overflow-safe range ±1024");
 ///
 /// let blind = Error::DegenerateCamera(CameraProblem::TargetIsEye);

@@ -36,21 +36,30 @@
 //! picture.
 //!
 //! Cameras keep `F² + R² ≤ 16 384·F` (view distance `F`, half-diagonal `R`, in pixels), so
-//! ray directions stay within 16 384 pixels and within half a pixel of exact. [`Ray`], [`Hit`],
-//! [`Material`] and [`Light`] have public fields, so a caller can build one outside these
-//! checks: the public functions that take them bound each direction and normal component to
-//! ±2 and saturate weights, which keeps every product in range (the picture is then not the
-//! documented one, but nothing panics or wraps).
+//! ray directions stay within 16 384 pixels and within half a pixel of exact. Every type that
+//! carries a checked value ([`Ray`], [`Hit`], [`Sphere`], [`Plane`], [`Light`], [`Material`],
+//! [`Scene`], [`Camera`]) keeps its fields private, so the render path only ever meets
+//! values its constructors accepted.
+//!
+//! # Set-up
+//!
+//! Values are given as `f32` (`Sphere::new([0.0, 0.0, -10.0], 2.0)`), converted and checked
+//! once (the `check` module). Each constructor has a `const` fixed-point form, `from_fx`, with
+//! the same checks, so that a scene can be a `static` built at compile time.
 //!
 //! # The pipeline, layer by layer
 //!
 //! The source folders are the layers, each using only the ones above it:
-//! - `numbers/`: [`Fx`] and its exact products ([`mul`]), integer square roots (`isqrt`),
-//!   reciprocals (a table-seeded reciprocal square root, and division by it), [`Vec3`].
+//! - `numbers/`: [`Fx`] and its exact products, integer square roots (`isqrt`), reciprocals
+//!   (a table-seeded reciprocal square root, and division by it), [`Vec3`].
+//! - `error.rs` and `check.rs`: the [`Error`] a refused value gets, and the set-up checks
+//!   that refuse it.
 //! - `geometry/`: the chapter's [`Ray`] (Eq. 4.1), [`Plane`] (Eq. 4.2) and [`Sphere`]
-//!   (section 4.4), pure intersection functions returning a [`Hit`]; [`Shape`] is either.
+//!   (section 4.4), pure intersection functions returning a [`Hit`], whose normal faces the
+//!   ray; [`Shape`] is either.
 //! - `scene/`: the [`Scene`] that holds [`Object`]s (a shape and its [`Material`], perhaps a
-//!   [`Checker`]), [`Light`]s and a [`Background`], in [`Rgb`] colours.
+//!   [`Checker`]), [`Light`]s and a [`Background`], in [`Rgb`] colours; its nearest hit is a
+//!   [`SceneHit`], a [`Hit`] and the object it is on.
 //! - `render/`: the [`Camera`] makes a ray through each pixel centre; `trace.rs` is the
 //!   chapter's shoot and shade, read top to bottom ([`Scene::trace`] = `shade(shoot(ray))`);
 //!   [`render_row`], [`render`], [`render_row_supersampled`], [`shoot_row`] and

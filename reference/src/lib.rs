@@ -48,7 +48,7 @@
 //! assert_eq!(frame[0], demo::BACKGROUND); // the top-left pixel is sky
 //! for (x, y) in [(0, 0), (2, 3), (7, 5)] {
 //!     // Both models see the same object through each pixel.
-//!     let fixed = scene.shoot(&camera.ray(x, y)).map(|hit| hit.object);
+//!     let fixed = scene.shoot(&camera.ray(x, y)).map(|hit| hit.object());
 //!     let reference = twin.shoot(&twin_camera.ray(x, y)).map(|hit| hit.object);
 //!     assert_eq!(fixed, reference);
 //! }
