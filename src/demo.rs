@@ -82,6 +82,13 @@ const fn sphere(index: usize, material: Material) -> Object {
 /// `static`.
 #[must_use]
 pub const fn scene() -> Scene<8> {
+    // Built once by the compiler: at run time a call is a copy, with no set-up on the stack.
+    const SCENE: Scene<8> = demo_scene();
+    SCENE
+}
+
+/// [`scene`], built.
+const fn demo_scene() -> Scene<8> {
     const fn matte(r: u8, g: u8, b: u8) -> Material {
         Material::matte(Rgb::new(r, g, b))
     }
@@ -126,6 +133,13 @@ pub fn camera(width: u32, height: u32) -> Result<Camera, Error> {
 /// a little diffuse light in place of tinyraytracer's transparency.
 #[must_use]
 pub const fn classic() -> Scene<8> {
+    // Built once by the compiler, as [`scene`] is.
+    const CLASSIC: Scene<8> = classic_scene();
+    CLASSIC
+}
+
+/// [`classic`], built.
+const fn classic_scene() -> Scene<8> {
     const fn material(
         colour: Rgb,
         diffuse: i32,
