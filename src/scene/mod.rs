@@ -305,13 +305,15 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// The objects, in the order they were added.
     #[must_use]
     pub fn objects(&self) -> &[Object] {
-        &self.objects[..self.object_count]
+        // `add` keeps the count within N; `min` says so to the compiler, which then drops the
+        // slice's bounds check from a call the render path makes for every ray.
+        &self.objects[..self.object_count.min(N)]
     }
 
     /// The lights, in the order they were added.
     #[must_use]
     pub fn lights(&self) -> &[Light] {
-        &self.lights[..self.light_count]
+        &self.lights[..self.light_count.min(L)]
     }
 
     /// The ambient term.
