@@ -425,7 +425,7 @@ fn the_reproducers_return() {
         let ray0 = ray(Vec3::ZERO, dir).unwrap();
         for s in [scene(gradient()), scene(Rgb::BLACK.into())] {
             if let Some(hit) = s.shoot(&ray0) {
-                assert_sane_hit(hit.t(), "huge direction");
+                assert_sane_hit(hit.hit().t(), "huge direction");
             }
             let _ = s.trace(&ray0);
         }
@@ -479,7 +479,7 @@ fn shooting_and_tracing_extreme_rays_returns_sane_hits() {
         }
         let s = &scenes[i % 2];
         if let Some(hit) = s.shoot(&ray) {
-            assert_sane_hit(hit.t(), "scene");
+            assert_sane_hit(hit.hit().t(), "scene");
             assert!(hit.object() < s.objects().len());
             let _ = s.shade(&ray, Some(&hit));
         }

@@ -214,7 +214,7 @@ fn the_highlight_lies_where_the_half_vector_meets_the_normal() {
         render_row(&scene, &camera, y, &mut row).unwrap();
         for (x, pixel) in row.iter().enumerate() {
             if let Some(hit) = scene.shoot(&camera.ray(x as u32, y)) {
-                let nh = n_dot_h(hit.point().to_f64());
+                let nh = n_dot_h(hit.hit().point().to_f64());
                 best_nh = best_nh.max(nh);
                 if pixel.r > brightest.0 || (pixel.r == brightest.0 && nh > brightest.1) {
                     brightest = (pixel.r, nh);

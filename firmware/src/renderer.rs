@@ -267,7 +267,7 @@ impl Renderer for FixedShoot {
             },
             |col, _, hit| {
                 if let (Some(pixel), Some(hit)) = (out.get_mut(col as usize), hit) {
-                    let t = hit.t().to_bits();
+                    let t = hit.hit().t().to_bits();
                     *pixel = Rgb::new(hit.object() as u8, (t >> 8) as u8, t as u8);
                 } else if let Some(pixel) = out.get_mut(col as usize) {
                     *pixel = Rgb::BLACK;

@@ -47,7 +47,10 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         }
         // Distances first; the hit point and normal only for the nearest.
         let hit = self.objects().get(nearest)?.shape.hit_at(ray, best);
-        Some(SceneHit::new(hit, nearest))
+        Some(SceneHit {
+            hit,
+            object: nearest,
+        })
     }
 
     /// The colour seen along `ray` when it has this first hit (from [`Scene::shoot`]): the
@@ -81,11 +84,11 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     #[inline(never)]
     fn reflections(&self, mut sum: Linear, dir: Vec3, first: &SceneHit, reflect: Fx) -> Linear {
         let mut weight = fx::mul(Fx::ONE, reflect);
-        let Some(bounced) = mirror(dir, first.normal) else {
+        let Some(bounced) = mirror(dir, first.hit.normal) else {
             add(&mut sum, weight, self.background().along(dir));
             return sum;
         };
-        let mut ray = Ray::new_unchecked(first.point, bounced);
+        let mut ray = Ray::new_unchecked(first.hit.point, bounced);
         let mut leaving = first.object;
         let mut bounce = 0;
         loop {
@@ -106,11 +109,11 @@ impl<const N: usize, const L: usize> Scene<N, L> {
                 return sum;
             }
             weight = fx::mul(weight, reflect);
-            let Some(bounced) = mirror(ray.dir, h.normal) else {
+            let Some(bounced) = mirror(ray.dir, h.hit.normal) else {
                 add(&mut sum, weight, self.background().along(ray.dir));
                 return sum;
             };
-            ray = Ray::new_unchecked(h.point, bounced);
+            ray = Ray::new_unchecked(h.hit.point, bounced);
             leaving = h.object;
         }
     }
@@ -118,10 +121,10 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// The surface's own light at a hit: ambient and diffuse times its colour, plus white
     /// highlights, from every light whose shadow ray reaches it.
     fn local(&self, object: &Object, hit: &SceneHit, dir: Vec3) -> Linear {
-        let (material, normal) = (&object.material, hit.normal);
+        let (material, normal) = (&object.material, hit.hit.normal);
         let (mut diffuse, mut specular) = (Fx::ZERO, Fx::ZERO);
         let mut light_up = |index: usize, light: &Light| {
-            let to_light = light.position - hit.point;
+            let to_light = light.position - hit.hit.point;
             let distance_squared = to_light.length_squared_wide();
             let Some(l) = to_light.normalize_with_square(distance_squared) else {
                 return;
@@ -131,7 +134,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
                 return;
             }
             if self.shadows() {
-                let shadow_ray = Ray::new_unchecked(hit.point, l);
+                let shadow_ray = Ray::new_unchecked(hit.hit.point, l);
                 if self.occluded(&shadow_ray, distance_squared, hit.object, index) {
                     return;
                 }
@@ -164,7 +167,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         } else {
             Fx::ZERO
         };
-        let colour = object.colour_at(hit.point);
+        let colour = object.colour_at(hit.hit.point);
         // A channel is at most 1: its product with k needs no saturation.
         let channel = |c: u8| fx::mul_fits(k, channel_to_linear(c)).saturating_add(highlight);
         [channel(colour.r), channel(colour.g), channel(colour.b)]

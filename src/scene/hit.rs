@@ -1,64 +1,36 @@
 //! [`SceneHit`]: the nearest hit in a scene, and which object it is on.
 
 use crate::geometry::hit::Hit;
-use crate::numbers::fx::Fx;
-use crate::numbers::vec3::Vec3;
 
-/// The nearest hit of a ray in a [`Scene`](crate::Scene): a [`Hit`] and the index of the
-/// object it is on, as [`Scene::add`](crate::Scene::add) returned it.
+/// The nearest hit of a ray in a [`Scene`](crate::Scene): the [`Hit`] on a shape, and the
+/// index of the object it is on, as [`Scene::add`](crate::Scene::add) returned it.
 ///
-/// The normal follows [`Hit`]'s convention: on the side the ray came from.
+/// ```
+/// use fixray::{Light, Ray, Rgb, Scene, Sphere, Vec3};
+/// let mut scene: Scene<1> = Scene::new(Light::new([0.0, 10.0, 0.0], 1.0)?, 0.2, Rgb::BLACK)?;
+/// let ball = scene.add_sphere(Sphere::new([0.0, 0.0, -10.0], 2.0)?, Rgb::WHITE)?;
+/// let seen = scene.shoot(&Ray::new(Vec3::ZERO, -Vec3::Z)?).unwrap();
+/// assert_eq!(seen.object(), ball);
+/// assert_eq!(seen.hit().point(), Vec3::from_ints(0, 0, -8));
+/// # Ok::<(), fixray::Error>(())
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct SceneHit {
-    pub(crate) t: Fx,
-    pub(crate) point: Vec3,
-    pub(crate) normal: Vec3,
+    pub(crate) hit: Hit,
     pub(crate) object: usize,
 }
 
 impl SceneHit {
-    /// `hit`, on object `object`.
-    #[inline]
-    pub(crate) const fn new(hit: Hit, object: usize) -> Self {
-        SceneHit {
-            t: hit.t,
-            point: hit.point,
-            normal: hit.normal,
-            object,
-        }
-    }
-
     /// The index of the object hit.
     #[must_use]
     pub const fn object(&self) -> usize {
         self.object
     }
 
-    /// The hit on that object's shape.
+    /// Where the ray met that object's shape: the distance, the point and the normal (on the
+    /// side the ray came from, as for every [`Hit`]).
     #[must_use]
     pub const fn hit(&self) -> Hit {
-        Hit {
-            t: self.t,
-            point: self.point,
-            normal: self.normal,
-        }
-    }
-
-    /// Distance along the ray, `t ≥ 0`.
-    #[must_use]
-    pub const fn t(&self) -> Fx {
-        self.t
-    }
-
-    /// The hit point `x = p_r + t·u_r`.
-    #[must_use]
-    pub const fn point(&self) -> Vec3 {
-        self.point
-    }
-
-    /// The unit surface normal at the point, on the side the ray came from.
-    #[must_use]
-    pub const fn normal(&self) -> Vec3 {
-        self.normal
+        self.hit
     }
 }

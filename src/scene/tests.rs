@@ -17,7 +17,7 @@ fn nearest_object_wins_whatever_the_order() {
     let hit = scene
         .shoot(&Ray::new(Vec3::ZERO, -Vec3::Z).unwrap())
         .unwrap();
-    assert_eq!((hit.object, hit.t), (near_index, Fx::from_num(8)));
+    assert_eq!((hit.object, hit.hit.t), (near_index, Fx::from_num(8)));
 }
 
 #[test]

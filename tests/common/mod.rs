@@ -927,35 +927,35 @@ pub fn check_hit<const N: usize>(scene: &Scene<N>, ray: &Ray, hit: Option<SceneH
         return;
     };
     assert_eq!(
-        Some((hit.t(), hit.object())),
+        Some((hit.hit().t(), hit.object())),
         best,
         "shoot's hit is not the nearest for {ray:?}"
     );
     assert!(
-        hit.t() >= Fx::ZERO && hit.t() <= FAR,
+        hit.hit().t() >= Fx::ZERO && hit.hit().t() <= FAR,
         "hit distance {} outside [0, FAR] for {ray:?}",
-        hit.t()
+        hit.hit().t()
     );
-    let expect = ray.at(hit.t());
+    let expect = ray.at(hit.hit().t());
     for (p, q) in [
-        (hit.point().x, expect.x),
-        (hit.point().y, expect.y),
-        (hit.point().z, expect.z),
+        (hit.hit().point().x, expect.x),
+        (hit.hit().point().y, expect.y),
+        (hit.hit().point().z, expect.z),
     ] {
         assert!(
             (p.to_bits() as i64 - q.to_bits() as i64).abs() <= 1,
             "hit point {:?} is not origin + t·dir = {expect:?}",
-            hit.point()
+            hit.hit().point()
         );
     }
     let object = &scene.objects()[hit.object()];
-    let n = hit.normal().to_f64();
+    let n = hit.hit().normal().to_f64();
     match object.shape {
         Shape::Plane(plane) => {
             assert!(
-                hit.normal() == plane.normal() || hit.normal() == -plane.normal(),
+                hit.hit().normal() == plane.normal() || hit.hit().normal() == -plane.normal(),
                 "plane hit normal {:?} is not ±{:?}",
-                hit.normal(),
+                hit.hit().normal(),
                 plane.normal()
             );
             let len = norm(n);
@@ -967,12 +967,12 @@ pub fn check_hit<const N: usize>(scene: &Scene<N>, ray: &Ray, hit: Option<SceneH
             assert!(
                 n[0] * d[0] + n[1] * d[1] + n[2] * d[2] < 0.0,
                 "plane normal {:?} does not face {ray:?}",
-                hit.normal()
+                hit.hit().normal()
             );
         }
         Shape::Sphere(sphere) => {
             let r = sphere.radius().to_num::<f64>();
-            let v = sub(hit.point().to_f64(), sphere.centre().to_f64());
+            let v = sub(hit.hit().point().to_f64(), sphere.centre().to_f64());
             // The normal faces the ray: outward from outside, inward from inside. Where the
             // ray grazes the surface the side is a matter of rounding; the normal given says
             // which, and must be (x − c)/r on that side.
@@ -989,11 +989,11 @@ pub fn check_hit<const N: usize>(scene: &Scene<N>, ray: &Ray, hit: Option<SceneH
                 assert!(
                     (n[axis] - exact).abs() <= ULP,
                     "sphere normal {:?} is not ±(x − c)/r = {:?} on the ray's side within one unit",
-                    hit.normal(),
+                    hit.hit().normal(),
                     v.map(|c| side * c / r)
                 );
             }
-            let t = hit.t().to_num::<f64>();
+            let t = hit.hit().t().to_num::<f64>();
             let allowed = ULP * (1.732_050_808 + 2.0 + (1.0 + 4.5 * t) / r);
             let len = norm(n);
             assert!(
@@ -1248,10 +1248,10 @@ pub fn check_shadows<const N: usize>(world: &World, camera: &Camera, row: u32) {
 
 /// Whether anything but the object `hit` is on lies between it and `light`, by brute force.
 pub fn occluded<const N: usize>(scene: &Scene<N>, hit: &SceneHit, light: &Light) -> bool {
-    let to_light = light.position() - hit.point();
+    let to_light = light.position() - hit.hit().point();
     let distance_squared = to_light.length_squared_wide();
     // The shadow ray's direction is `to_light` normalised, as the renderer's is.
-    let Ok(shadow) = Ray::new(hit.point(), to_light) else {
+    let Ok(shadow) = Ray::new(hit.hit().point(), to_light) else {
         return false; // a light at the hit point: it lights nothing there either way
     };
     scene.objects().iter().enumerate().any(|(i, object)| {

@@ -70,7 +70,7 @@ impl Accuracy {
                 acc.add(seen, dseen, same);
                 each(row, col, seen, dseen);
                 if let (Some(h), Some(d), true) = (hit, dhit, same) {
-                    let dt = (h.t().to_num::<f64>() - d.t).abs();
+                    let dt = (h.hit().t().to_num::<f64>() - d.t).abs();
                     acc.max_dt = acc.max_dt.max(dt);
                     if d.t > 0.0 {
                         acc.max_dt_relative = acc.max_dt_relative.max(dt / d.t);

@@ -98,7 +98,10 @@ impl<const N: usize, const L: usize> Scene<N, L> {
             try_object(index, object);
         }
         let hit = self.objects().get(nearest)?.shape.hit_at(ray, best);
-        Some(SceneHit::new(hit, nearest))
+        Some(SceneHit {
+            hit,
+            object: nearest,
+        })
     }
 }
 
