@@ -123,8 +123,8 @@ fn without_mirrors(scene: &Scene<8>) -> Result<Scene<8>, Error> {
 pub trait Renderer: Sized {
     /// Its name in the report and the script's table, before the variant's suffix.
     const NAME: &'static str;
-    /// Why it refused.
-    type Error: Debug;
+    /// Why it refused: `Copy`, so that the harness can report it from a borrowed `Result`.
+    type Error: Debug + Copy;
 
     /// Sets up `variant` for a `cols × rows` frame.
     fn new(variant: Variant, cols: u32, rows: u32) -> Result<Self, Self::Error>;
