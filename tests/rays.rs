@@ -57,8 +57,27 @@ fn sphere_t_bound(t: f64, r: f64, a: f64) -> f64 {
     ULP * (1.0 + t + r * r / a)
 }
 
+/// Cases per property: `PROPTEST_CASES` if set (CI sets many, in a release build), else
+/// enough for a quick debug `cargo test`.
+fn cases() -> u32 {
+    std::env::var("PROPTEST_CASES")
+        .ok()
+        .and_then(|n| n.parse().ok())
+        .unwrap_or(if cfg!(debug_assertions) {
+            2_000
+        } else {
+            20_000
+        })
+}
+
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(20_000))]
+    // A few in a hundred grazing rays are set aside (`prop_assume!`): the budget grows with
+    // the cases.
+    #![proptest_config(ProptestConfig {
+        cases: cases(),
+        max_global_rejects: cases() / 10 + 1024,
+        ..ProptestConfig::default()
+    })]
 
     #[test]
     fn spheres_agree_with_the_reference(
