@@ -8,7 +8,6 @@
 //! and the chapter's formulas for the camera.
 #![allow(dead_code)] // each user of this module calls a different part of it
 
-use fixray_reference::ToF64;
 use std::collections::HashMap;
 
 use embedded_graphics::pixelcolor::{BinaryColor, Gray8, PixelColor, Rgb565, Rgb888};
@@ -19,6 +18,18 @@ use fixray::{
     Background, Camera, Error, FAR, Framebuffer, Fx, LIMIT, Light, Material, Object, Plane, Ray,
     Rgb, Scene, SceneHit, Shape, Sphere, Vec3,
 };
+
+/// A vector's components as `f64`, exactly (every Q16.16 number is an `f64`). The fuzz target
+/// shares this module and has no reference model, so the conversion is here.
+pub trait ToF64 {
+    fn to_f64(self) -> [f64; 3];
+}
+
+impl ToF64 for Vec3 {
+    fn to_f64(self) -> [f64; 3] {
+        [self.x.to_num(), self.y.to_num(), self.z.to_num()]
+    }
+}
 
 /// One unit of Q16.16.
 pub const ULP: f64 = 1.0 / 65536.0;
