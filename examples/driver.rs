@@ -20,7 +20,6 @@ use std::rc::Rc;
 use embedded_graphics::pixelcolor::raw::{RawData, RawU16};
 use embedded_graphics::pixelcolor::{Rgb565, Rgb888};
 use embedded_graphics::prelude::*;
-use embedded_graphics::primitives::Rectangle;
 use embedded_hal::delay::DelayNs;
 use embedded_hal::digital::{ErrorType as PinErrorType, OutputPin};
 use embedded_hal::spi::{ErrorType as SpiErrorType, Operation, SpiDevice};
@@ -47,8 +46,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
 
     // The picture: a camera the size of the display, drawn 16 rows per bus transfer.
     let (scene, camera) = (demo::scene(), demo::camera(240, 240)?);
-    let area = Rectangle::new(Point::zero(), Size::new(240, 240));
-    let viewport = Viewport::new(&scene, &camera, area)?;
+    let viewport = Viewport::at(&scene, &camera, Point::zero());
     let mut band = [Rgb::BLACK; 240 * 16];
     viewport.render(&mut band, &mut display)?;
 

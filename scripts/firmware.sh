@@ -121,7 +121,7 @@ fi
 
 # Lines of `renderer hash`, e.g. `fixed-classic 0x1234abcd`, for every renderer and scene. The
 # dev profile reuses what `cargo test` built; the hashes are the same in any profile.
-host=$(cd "$root" && cargo run --quiet --example frame_hash)
+host=$(cd "$root" && cargo run --quiet --example frame_hash && cargo run --quiet --example draw_hash)
 declare -A host_hash
 while read -r renderer hash; do
     host_hash[$renderer]=$hash
@@ -197,9 +197,38 @@ for target in "${targets[@]}"; do
     done
 done
 
+# The drawing layer (firmware/src/bin/draw.rs): each scene drawn onto an Rgb565 display through
+# `Viewport::render` and through a `Picture`, with the stack each draw takes below its call,
+# measured by painting. Its hashes are examples/draw_hash.rs's; it is not in the README tables.
 echo
-echo "host hashes (examples/frame_hash.rs):"
-for renderer in "${names[@]}"; do
+drow() { printf '%-28s %-8s %-8s %-8s %7s\n' "$@"; }
+drow target scene via hash stack
+for target in "${targets[@]}"; do
+    log="$logs/$target-draw.txt"
+    status=0
+    (cd "$firmware" && cargo run --quiet --release --target "$target" \
+        --config "$(remap "$target")" --bin draw) \
+        >"$log" 2>&1 || status=$?
+    draws=$(line draw:)
+    if ((status != 0)) || (($(grep -c . <<<"$draws") != 4)); then
+        drow "$target" draw - FAILED "exit $status"
+        sed 's/^/    /' "$log" | tail -n 5 >&2
+        failed=1
+        continue
+    fi
+    while read -r draw; do
+        scene=$(field scene "$draw")
+        verdict=MISMATCH
+        [[ $(field hash "$draw") == "${host_hash[draw-$scene]:-none}" ]] && verdict=match
+        [[ $verdict == match ]] || failed=1
+        drow "$target" "$scene" "$(field via "$draw")" "$verdict" "$(field stack "$draw")"
+    done <<<"$draws"
+done
+echo "stack = bytes below the draw's call (a picture's includes its own row buffer)."
+
+echo
+echo "host hashes (examples/frame_hash.rs, examples/draw_hash.rs):"
+for renderer in "${names[@]}" draw-demo draw-classic; do
     printf '  %-24s %s\n' "$renderer" "${host_hash[$renderer]:-none}"
 done
 echo "instruction counters (QEMU -icount shift=0), each checked by a loop of known length:"

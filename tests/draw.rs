@@ -287,33 +287,6 @@ fn a_failing_display_hands_its_error_back_and_stops() {
 #[test]
 fn refused_requests_are_errors_and_draw_nothing() {
     let (scene, camera) = (demo::scene(), demo::camera(COLS, ROWS).unwrap());
-    let mismatch = |target| Error::SizeMismatch {
-        camera: (40, 30),
-        target,
-    };
-    // A viewport of another size than the camera's.
-    let wrong = Viewport::new(
-        &scene,
-        &camera,
-        Rectangle::new(Point::zero(), Size::new(40, 31)),
-    );
-    assert_eq!(wrong.err(), Some(mismatch((40, 31))));
-    // A viewport whose far corner does not fit in i32.
-    let far = Viewport::new(
-        &scene,
-        &camera,
-        Rectangle::new(Point::new(i32::MAX - 39, 0), Size::new(40, 30)),
-    );
-    assert_eq!(far.err(), Some(Error::ViewportOverflow));
-    assert!(
-        Viewport::new(
-            &scene,
-            &camera,
-            Rectangle::new(Point::new(i32::MAX - 40, -5), Size::new(40, 30))
-        )
-        .is_ok()
-    );
-
     let view = Viewport::at(&scene, &camera, Point::zero());
     let mut display = Flaky {
         calls: 0,
@@ -586,28 +559,16 @@ fn a_picture_hands_the_driver_error_back_unchanged() {
 }
 
 #[test]
-fn new_and_at_place_the_same_picture() {
+fn at_places_the_cameras_picture_at_its_corner() {
     let (scene, camera) = (demo::scene(), demo::camera(COLS, ROWS).unwrap());
     let corner = Point::new(-3, 9);
-    let area = Rectangle::new(corner, Size::new(40, 30));
-    let new = Viewport::new(&scene, &camera, area).unwrap();
     let at = Viewport::at(&scene, &camera, corner);
-    assert_eq!((new.top_left(), new.area()), (corner, area));
+    let area = Rectangle::new(corner, Size::new(40, 30));
     assert_eq!(
         (at.top_left(), at.area(), at.size()),
         (corner, area, area.size)
     );
     assert_eq!(at.bounding_box(), area);
-    // The display's own bounding box, the natural thing to try, is refused by `new` when
-    // its size is not the camera's; `at` takes only the corner.
-    let display = Recorder::<Rgb888>::new(53, 47);
-    assert_eq!(
-        Viewport::new(&scene, &camera, display.bounding_box()).err(),
-        Some(Error::SizeMismatch {
-            camera: (40, 30),
-            target: (53, 47)
-        })
-    );
 }
 
 #[test]

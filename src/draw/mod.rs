@@ -64,15 +64,16 @@
 //!
 //! # RAM and stack
 //!
-//! The renderer's RAM is the row buffer the caller passes, 3 bytes a column, and nothing
-//! else grows with the display. For a 320 × 240 display, drawn one row at a time:
+//! The renderer's RAM is the row buffer the caller passes, 3 bytes a column, and the stack
+//! below the call; nothing else grows with the display. For a 320 × 240 display, drawn one
+//! row at a time:
 //!
 //! | what | bytes |
 //! | --- | --- |
 //! | row buffer, `[Rgb; 320]` | 960 |
 //! | the [`Viewport`] (two references and a point, 32-bit target) | 16 |
-//! | stack below [`Viewport::render`] on a Cortex-M0, deepest path | about 1 200 |
-//! | **total** | **about 2.2 KB** |
+//! | stack below [`Viewport::render`], Cortex-M0, classic scene (the deepest) | 2 288 |
+//! | **total** | **about 3.3 KB** |
 //!
 //! A framebuffer for the same display would take 230 400 bytes. The scene (`Scene<8>`, about
 //! 1 KB with its shadow cones) and camera (56 bytes) are the caller's, wherever it keeps
@@ -80,16 +81,26 @@
 //! A [`Picture`] holds the same one-row buffer on the stack while it draws (`[Rgb; W]`, with
 //! `W` the width it was made for), so its total is the same, all of it stack.
 //!
-//! The stack figure is measured, not estimated: a `Viewport::render` call for `Rgb565` and for
-//! `BinaryColor` into a display that consumes its pixels, built for `thumbv6m-none-eabi` with
-//! `opt-level = 3` and fat LTO, disassembled, and each function's frame (its `push` and
-//! `sub sp`) summed along the deepest call chain: render (128 or 144 bytes, the dithered
-//! format being the larger) → `render_row` (784, of which 256 are the per-row table of sphere
-//! column spans that culling uses, the rest shading and shadows inlined) → a shape's
-//! `hit_distance` (120) → the integer square root (64) → the 64-bit helpers (under 140). A
-//! real driver's `fill_contiguous` runs from the render's frame, beside `render_row` rather
-//! than below it, so it adds to the total only where it needs more than that branch. Nothing
-//! recurses.
+//! The stack is measured on each chip under QEMU by the firmware's `draw` binary
+//! (`firmware/src/bin/draw.rs`, run by `scripts/firmware.sh`; `opt-level = 3`, fat LTO): it
+//! paints the free stack with a pattern, draws the demo and the classic scene at 160 × 128
+//! onto an `Rgb565` display that digests every pixel (the digest matches the host's), and
+//! takes the deepest word no longer painted, counted from the stack pointer at the call.
+//! Bytes, demo scene / classic scene:
+//!
+//! | chip | [`Viewport::render`], one-row buffer | `picture::<Rgb565, 160>()?.draw` |
+//! | --- | ---: | ---: |
+//! | Cortex-M0 (`thumbv6m-none-eabi`) | 1 952 / 2 288 | 2 448 / 2 784 |
+//! | Cortex-M4F (`thumbv7em-none-eabihf`) | 1 448 / 1 780 | 1 952 / 2 284 |
+//! | RV32IMC (`riscv32imc-unknown-none-elf`) | 1 356 / 1 628 | 1 852 / 2 124 |
+//!
+//! The classic scene, with mirrors, highlights and three lights' shadows, takes the deepest
+//! path; a picture adds its row buffer (480 bytes at 160 columns) and a few words to the
+//! render below it. The render's buffer is the caller's and not counted, and nothing on the
+//! stack is sized by the picture, so other sizes take about the same. The display's
+//! `fill_contiguous` is included; it runs beside `render_row` rather than below it, so a real
+//! driver adds to the total only where it needs more than that branch. Nothing recurses:
+//! mirror bounces are a loop, so the mirror depth does not change the figure either.
 
 mod clip;
 mod color;

@@ -73,29 +73,6 @@ impl<'a, const N: usize, const L: usize> Viewport<'a, N, L> {
         }
     }
 
-    /// Places the camera's picture on `area` of a display, for code that holds the rectangle;
-    /// [`Viewport::at`] needs only its corner.
-    ///
-    /// `area` must be exactly [`Camera::size`] pixels
-    /// ([`Error::SizeMismatch`] otherwise), and its far corner must be a representable
-    /// display point ([`Error::ViewportOverflow`] otherwise).
-    pub fn new(scene: &'a Scene<N, L>, camera: &'a Camera, area: Rectangle) -> Result<Self, Error> {
-        let (cols, rows) = (camera.cols(), camera.rows());
-        if area.size != camera.size() {
-            let clamp = |v: u32| v.min(u16::MAX.into()) as u16;
-            return Err(Error::SizeMismatch {
-                camera: (cols, rows),
-                target: (clamp(area.size.width), clamp(area.size.height)),
-            });
-        }
-        let fits = area.top_left.x.checked_add(cols.into()).is_some()
-            && area.top_left.y.checked_add(rows.into()).is_some();
-        if !fits {
-            return Err(Error::ViewportOverflow);
-        }
-        Ok(Viewport::at(scene, camera, area.top_left))
-    }
-
     /// The display point of the picture's top left pixel.
     #[must_use]
     pub const fn top_left(&self) -> Point {
