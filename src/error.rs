@@ -115,7 +115,7 @@ pub enum Error {
         /// The rows the camera has (valid rows are `0..rows`).
         rows: u32,
     },
-    /// A camera and a framebuffer or display area of different sizes.
+    /// A camera and a framebuffer of different sizes.
     SizeMismatch {
         /// Columns and rows the camera was built for.
         camera: (u16, u16),
@@ -130,9 +130,6 @@ pub enum Error {
         /// The buffer's length.
         got: usize,
     },
-    /// A viewport whose far corner lies past the display coordinates embedded-graphics can
-    /// hold (`i32`).
-    ViewportOverflow,
 }
 
 /// The quantities fixray checks, as named by [`Error`].
@@ -344,10 +341,6 @@ impl fmt::Display for Error {
             Error::BufferLength { needed, got } => write!(
                 f,
                 "row buffer holds {got} pixels where a row of the picture has {needed}"
-            ),
-            Error::ViewportOverflow => write!(
-                f,
-                "viewport position is outside display points whose far corner fits in i32"
             ),
         }
     }

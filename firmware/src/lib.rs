@@ -12,6 +12,7 @@
 //! | `fixed_classic_noshadow`, `fixed_classic_nomirror` | the classic scene without shadow rays, without mirrors |
 //! | `reference`, `reference_classic` | both scenes by the `f64` reference (soft-float everywhere) |
 //! | `reference_f32`, `reference_f32_classic` | both scenes by the reference in `f32` (the Cortex-M4F's FPU) |
+//! | `draw` | both scenes through `Viewport::render` and a `Picture` onto an `Rgb565` display: the drawing layer's stack |
 //!
 //! It prints over semihosting what `scripts/firmware.sh` turns into a table: the
 //! [`fixray::FrameHash`] of the frame (the host computes the same one, with the same
