@@ -16,17 +16,10 @@ use fixray::{
     Scene, Shape, Sphere, Vec3, Viewport, demo, render_row,
 };
 
-/// Marsaglia's xorshift64: varied values from a fixed seed, so a failure repeats.
-struct XorShift(u64);
+mod common;
 
-impl XorShift {
-    fn next(&mut self) -> u64 {
-        self.0 ^= self.0 << 13;
-        self.0 ^= self.0 >> 7;
-        self.0 ^= self.0 << 17;
-        self.0
-    }
-}
+// The shared xorshift64: varied values from a fixed seed, so a failure repeats.
+use common::{ClampLimit, Source, XorShift};
 
 /// The edges of Q16.16 and of the overflow budget.
 const EDGES: [i32; 13] = [
@@ -50,7 +43,7 @@ fn hostile(rng: &mut XorShift, i: usize) -> Fx {
     if let Some(&edge) = EDGES.get(i % (2 * EDGES.len())) {
         return Fx::from_bits(edge);
     }
-    let seed = rng.next();
+    let seed = rng.bits();
     Fx::from_bits((seed as i32) >> (seed >> 59))
 }
 
@@ -63,7 +56,7 @@ fn hostile_vec(rng: &mut XorShift, i: usize) -> Vec3 {
         return Vec3::new(edge(i), edge(i / n), edge(i / (n * n)));
     }
     let mut component = |k: usize| {
-        let pick = rng.next() as usize;
+        let pick = rng.bits() as usize;
         hostile(
             rng,
             if pick.is_multiple_of(2) {
@@ -83,16 +76,10 @@ fn corners() -> impl Iterator<Item = Vec3> {
     (0..27).map(move |i| Vec3::new(c[i % 3], c[i / 3 % 3], c[i / 9]))
 }
 
-/// `v` with each component clamped into ±LIMIT: the nearest point a constructor accepts.
-fn clamped(v: Vec3) -> Vec3 {
-    let c = |x: Fx| x.clamp(-LIMIT, LIMIT);
-    Vec3::new(c(v.x), c(v.y), c(v.z))
-}
-
 /// A ray from `origin` along `dir` if `Ray::new` accepts them, after checking that it refuses
 /// exactly what lies outside its range.
 fn ray(origin: Vec3, dir: Vec3) -> Option<Ray> {
-    let valid = origin == clamped(origin) && dir != Vec3::ZERO;
+    let valid = origin == origin.clamp_limit() && dir != Vec3::ZERO;
     let ray = Ray::new(origin, dir);
     assert_eq!(ray.is_ok(), valid, "Ray::new({origin:?}, {dir:?})");
     ray.ok()
@@ -463,7 +450,11 @@ fn shooting_and_tracing_extreme_rays_returns_sane_hits() {
             hostile_vec(&mut XorShift(i as u64 + 1), i + 7)
         };
         // Half the origins as drawn (often refused), half moved into range.
-        let origin = if i % 2 == 0 { origin } else { clamped(origin) };
+        let origin = if i % 2 == 0 {
+            origin
+        } else {
+            origin.clamp_limit()
+        };
         (
             origin,
             hostile_vec(&mut XorShift(i as u64 + 99), (i * 7) % 4_000),
@@ -485,7 +476,7 @@ fn shooting_and_tracing_extreme_rays_returns_sane_hits() {
             assert!(hit.object() < s.objects().len());
             let _ = s.shade(&ray, Some(&hit));
         }
-        let _ = s.shoot_among(&ray, rng.next());
+        let _ = s.shoot_among(&ray, rng.bits());
         let _ = s.trace(&ray);
         let _ = s.shade(&ray, None);
     }
@@ -500,21 +491,21 @@ fn extreme_material(rng: &mut XorShift, i: usize) -> Material {
         w.clamp(Fx::ZERO, Fx::from_num(max))
     };
     let (diffuse, specular, reflect) = (weight(0, 2), weight(1, 16), weight(2, 1));
-    let shininess = [0, 1, 2, 4096, u16::MAX, rng.next() as u16][i % 6];
+    let shininess = [0, 1, 2, 4096, u16::MAX, rng.bits() as u16][i % 6];
     let refused = Material::from_fx(Rgb::WHITE, diffuse, specular, shininess, reflect);
     assert_eq!(
         refused.is_ok(),
         (1..=4096).contains(&shininess),
         "shininess {shininess}"
     );
-    let colour = Rgb::new(rng.next() as u8, rng.next() as u8, rng.next() as u8);
+    let colour = Rgb::new(rng.bits() as u8, rng.bits() as u8, rng.bits() as u8);
     let material =
         Material::from_fx(colour, diffuse, specular, shininess.clamp(1, 4096), reflect).unwrap();
     if i.is_multiple_of(3) {
         return material;
     }
     let size = hostile(rng, i + 3);
-    let checkered = material.with_checker_fx(size, Rgb::new(rng.next() as u8, 0, 255));
+    let checkered = material.with_checker_fx(size, Rgb::new(rng.bits() as u8, 0, 255));
     assert_eq!(
         checkered.is_ok(),
         size > Fx::ZERO && size <= LIMIT,
@@ -533,11 +524,11 @@ fn extreme_light(rng: &mut XorShift, i: usize) -> Light {
     let intensity = hostile(rng, i + 4);
     let light = Light::from_fx(position, intensity);
     let valid =
-        position == clamped(position) && intensity >= Fx::ZERO && intensity <= Fx::from_num(4);
+        position == position.clamp_limit() && intensity >= Fx::ZERO && intensity <= Fx::from_num(4);
     assert_eq!(light.is_ok(), valid, "light at {position:?} of {intensity}");
     light.unwrap_or_else(|_| {
         Light::from_fx(
-            clamped(position),
+            position.clamp_limit(),
             intensity.clamp(Fx::ZERO, Fx::from_num(4)),
         )
         .unwrap()

@@ -299,8 +299,9 @@ fn plane(src: &mut impl Source, view: View) -> Plane {
     }
 }
 
-/// Clamping into ±LIMIT, for generated points pushed outward by an offset.
-trait ClampLimit {
+/// Clamping into ±LIMIT, for generated points pushed outward by an offset, and for hostile
+/// points moved to the nearest one a constructor accepts.
+pub trait ClampLimit {
     fn clamp_limit(self) -> Self;
 }
 
