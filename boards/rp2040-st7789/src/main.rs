@@ -6,8 +6,8 @@
 //! every band to the display in order, converted to `Rgb565` on the way. While core 0 sends a
 //! band, core 1 is already rendering its next one into its second buffer: the SPI transfer
 //! overlaps rendering. (Core 0's own bands are sent synchronously: mipidsi drives the bus
-//! through embedded-hal's blocking `SpiDevice`, so no DMA; a band takes about 0.4 ms on the
-//! wire against about 28 ms to render, see the README.)
+//! through embedded-hal's blocking `SpiDevice`, so no DMA; a band takes about 0.25 ms on the
+//! wire against about 14 ms to render, see the README.)
 //!
 //! Core 1's two buffers travel between the cores through four one-buffer slots (one per
 //! buffer for "rendered", one per buffer for "sent"), each a `critical_section::Mutex`, so
