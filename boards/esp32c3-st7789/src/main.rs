@@ -1,0 +1,136 @@
+//! fixray on an ESP32-C3: the demo scene on a 240 × 135 ST7789 display through esp-hal's SPI
+//! and mipidsi, then the frame time in the corner and on the serial console.
+//!
+//! The ESP32-C3 has one RV32IMC core and no FPU, the chip fixray is made for. The picture is
+//! drawn by fixray's `Viewport` with a buffer of `BAND_ROWS` rows: it renders a band with
+//! `render_row`, then sends it in one `fill_contiguous` (one address window on the display),
+//! converted to `Rgb565`.
+
+#![no_std]
+#![no_main]
+#![deny(unsafe_code)]
+
+use core::fmt::Write;
+
+use embedded_graphics::mono_font::{MonoTextStyleBuilder, ascii::FONT_6X10};
+use embedded_graphics::pixelcolor::Rgb565;
+use embedded_graphics::prelude::*;
+use embedded_graphics::text::{Baseline, Text};
+use embedded_hal_bus::spi::ExclusiveDevice;
+use esp_backtrace as _;
+use esp_hal::clock::CpuClock;
+use esp_hal::delay::Delay;
+use esp_hal::gpio::{Level, Output, OutputConfig};
+use esp_hal::spi::Mode;
+use esp_hal::spi::master::{Config, Spi};
+use esp_hal::time::{Instant, Rate};
+use fixray::{FromRgb, Rgb, Scene, Viewport, demo};
+use mipidsi::Builder;
+use mipidsi::interface::SpiInterface;
+use mipidsi::models::ST7789;
+use mipidsi::options::{ColorInversion, Orientation, Rotation};
+
+esp_bootloader_esp_idf::esp_app_desc!();
+
+/// The display in landscape: the 1.14" 240 × 135 ST7789 module (sold as "1.14 inch IPS").
+/// For a 320 × 240 module see the README.
+const WIDTH: usize = 240;
+const HEIGHT: usize = 135;
+
+/// Rows per band: 16 rows are 11.5 KB of `Rgb` on the stack, and 9 bus transfers a frame.
+const BAND_ROWS: usize = 16;
+
+/// The scene is built by the compiler and sits in flash.
+static SCENE: Scene<8> = demo::scene();
+
+#[esp_hal::main]
+fn main() -> ! {
+    // The fastest clock, 160 MHz: the frame time scales with it.
+    let peripherals = esp_hal::init(esp_hal::Config::default().with_cpu_clock(CpuClock::max()));
+    let mut delay = Delay::new();
+
+    // The display on SPI2 (README: the wiring table). 40 MHz is the fastest the GPIO matrix
+    // carries; the ST7789 takes up to 62.5 MHz.
+    let spi = Spi::new(
+        peripherals.SPI2,
+        Config::default()
+            .with_frequency(Rate::from_mhz(40))
+            .with_mode(Mode::_0),
+    )
+    .unwrap()
+    .with_sck(peripherals.GPIO6)
+    .with_mosi(peripherals.GPIO7);
+    let cs = Output::new(peripherals.GPIO10, Level::High, OutputConfig::default());
+    let dc = Output::new(peripherals.GPIO4, Level::Low, OutputConfig::default());
+    let _backlight = Output::new(peripherals.GPIO5, Level::High, OutputConfig::default());
+    let spi = ExclusiveDevice::new_no_delay(spi, cs).unwrap();
+    let mut spi_buffer = [0u8; 512];
+    let interface = SpiInterface::new(spi, dc, &mut spi_buffer);
+    // The panel's controller is 240 × 320; this module shows 135 × 240 of it from column 52,
+    // row 40, and is turned a quarter for landscape. IPS panels need their colours inverted.
+    let mut display = Builder::new(ST7789, interface)
+        .display_size(135, 240)
+        .display_offset(52, 40)
+        .orientation(Orientation::new().rotate(Rotation::Deg90))
+        .invert_colors(ColorInversion::Inverted)
+        .init(&mut delay)
+        .unwrap();
+
+    // The camera is the display's size, the picture at its top left corner.
+    let camera = demo::camera(WIDTH as u32, HEIGHT as u32).unwrap();
+    let view = Viewport::at(&SCENE, &camera, Point::zero());
+    let mut band = [Rgb::BLACK; WIDTH * BAND_ROWS];
+
+    let start = Instant::now();
+    view.render(&mut band, &mut display).unwrap();
+    let elapsed = start.elapsed().as_millis();
+
+    esp_println::println!("fixray: demo scene, {WIDTH} x {HEIGHT}, {elapsed} ms");
+    // The frame time, rendering and sending included, over the sky in the top left corner.
+    let mut text = Line::new();
+    let _ = write!(text, "{elapsed} ms");
+    let style = MonoTextStyleBuilder::new()
+        .font(&FONT_6X10)
+        .text_color(Rgb565::BLACK)
+        .background_color(Rgb565::from_rgb(demo::BACKGROUND, Point::zero()))
+        .build();
+    Text::with_baseline(text.as_str(), Point::new(2, 2), style, Baseline::Top)
+        .draw(&mut display)
+        .unwrap();
+
+    loop {
+        delay.delay_millis(1000);
+    }
+}
+
+/// A line of text for the display, formatted without an allocator.
+struct Line {
+    bytes: [u8; 32],
+    len: usize,
+}
+
+impl Line {
+    fn new() -> Self {
+        Line {
+            bytes: [0; 32],
+            len: 0,
+        }
+    }
+
+    fn as_str(&self) -> &str {
+        // Only whole `str`s are ever appended.
+        core::str::from_utf8(&self.bytes[..self.len]).unwrap_or("")
+    }
+}
+
+impl Write for Line {
+    fn write_str(&mut self, s: &str) -> core::fmt::Result {
+        let end = self.len + s.len();
+        self.bytes
+            .get_mut(self.len..end)
+            .ok_or(core::fmt::Error)?
+            .copy_from_slice(s.as_bytes());
+        self.len = end;
+        Ok(())
+    }
+}

@@ -1,0 +1,276 @@
+//! fixray on a Raspberry Pi Pico: the demo scene on a 240 × 135 ST7789 display, rendered by
+//! both of the RP2040's Cortex-M0+ cores, then the frame time in the corner.
+//!
+//! The picture is cut into bands of `BAND_ROWS` rows. Core 0 renders the even bands, core 1
+//! the odd ones, each with `fixray::render_row` into a band buffer of `Rgb` rows; core 0 sends
+//! every band to the display in order, converted to `Rgb565` on the way. While core 0 sends a
+//! band, core 1 is already rendering its next one into its second buffer: the SPI transfer
+//! overlaps rendering. (Core 0's own bands are sent synchronously: mipidsi drives the bus
+//! through embedded-hal's blocking `SpiDevice`, so no DMA; a band takes about 0.25 ms on the
+//! wire against about 14 ms to render, see the README.)
+//!
+//! Core 1's two buffers travel between the cores through four one-buffer slots (one per
+//! buffer for "rendered", one per buffer for "sent"), each a `critical_section::Mutex`, so
+//! the hand-over is safe Rust: a buffer is always owned by exactly one core. A core waiting
+//! for a slot sleeps in `wfe`; the other core's `sev` after filling one wakes it.
+
+#![no_std]
+#![no_main]
+#![deny(unsafe_code)]
+
+use core::cell::RefCell;
+use core::fmt::Write;
+
+use critical_section::Mutex;
+use embedded_graphics::mono_font::{MonoTextStyleBuilder, ascii::FONT_6X10};
+use embedded_graphics::pixelcolor::Rgb565;
+use embedded_graphics::prelude::*;
+use embedded_graphics::primitives::Rectangle;
+use embedded_graphics::text::{Baseline, Text};
+use embedded_hal_bus::spi::ExclusiveDevice;
+use fixray::{Camera, FromRgb, Rgb, Scene, demo, render_row};
+use mipidsi::Builder;
+use mipidsi::interface::SpiInterface;
+use mipidsi::models::ST7789;
+use mipidsi::options::{ColorInversion, Orientation, Rotation};
+use panic_halt as _;
+use rp2040_hal::fugit::RateExtU32;
+use rp2040_hal::gpio::{FunctionSpi, PinState};
+use rp2040_hal::multicore::{Multicore, Stack};
+use rp2040_hal::{Sio, Timer, Watchdog, pac};
+
+/// The second-stage boot loader for the Pico's W25Q080 flash, at the start of flash.
+#[allow(unsafe_code)] // placing a static in a linker section is an unsafe attribute
+#[unsafe(link_section = ".boot2")]
+#[used]
+static BOOT2: [u8; 256] = rp2040_boot2::BOOT_LOADER_W25Q080;
+
+/// The Pico's crystal.
+const XTAL_HZ: u32 = 12_000_000;
+
+/// The display in landscape: the 1.14" 240 × 135 ST7789 module (Pimoroni's Pico Display Pack,
+/// and the bare modules sold as "1.14 inch IPS"). For a 320 × 240 module see the README.
+const WIDTH: usize = 240;
+const HEIGHT: usize = 135;
+
+/// Rows per band: small bands keep the two cores' shares even (34 bands, 17 each) and the
+/// buffers small (3 × 2 880 bytes).
+const BAND_ROWS: usize = 4;
+const BANDS: usize = HEIGHT.div_ceil(BAND_ROWS);
+
+/// A band of rendered rows, fixray's 3-byte colours.
+type Band = [Rgb; WIDTH * BAND_ROWS];
+
+/// The scene is built by the compiler and sits in flash; both cores read it.
+static SCENE: Scene<8> = demo::scene();
+
+/// Core 1's stack: 16 KiB (a render takes well under 8 KiB on a Cortex-M0).
+static CORE1_STACK: Stack<4096> = Stack::new();
+
+/// A place one core leaves one of core 1's buffers for the other core to take.
+type Slot = Mutex<RefCell<Option<&'static mut Band>>>;
+
+/// Core 1's band buffers, rendered and waiting to be sent; slot `i % 2` for its `i`-th band.
+static RENDERED: [Slot; 2] = [const { Mutex::new(RefCell::new(None)) }; 2];
+/// The same buffers, sent and free again.
+static SENT: [Slot; 2] = [const { Mutex::new(RefCell::new(None)) }; 2];
+
+#[rp2040_hal::entry]
+fn main() -> ! {
+    let mut pac = pac::Peripherals::take().unwrap();
+    let mut watchdog = Watchdog::new(pac.WATCHDOG);
+    // 125 MHz system clock from the 12 MHz crystal; the peripheral clock (SPI) is the same.
+    let clocks = rp2040_hal::clocks::init_clocks_and_plls(
+        XTAL_HZ,
+        pac.XOSC,
+        pac.CLOCKS,
+        pac.PLL_SYS,
+        pac.PLL_USB,
+        &mut pac.RESETS,
+        &mut watchdog,
+    )
+    .ok()
+    .unwrap();
+    let mut sio = Sio::new(pac.SIO);
+    let pins = rp2040_hal::gpio::Pins::new(
+        pac.IO_BANK0,
+        pac.PADS_BANK0,
+        sio.gpio_bank0,
+        &mut pac.RESETS,
+    );
+    let mut timer = Timer::new(pac.TIMER, &mut pac.RESETS, &clocks);
+
+    // The display on SPI0, wired as on the Pico Display Pack (README: the wiring table).
+    let sck = pins.gpio18.into_function::<FunctionSpi>();
+    let mosi = pins.gpio19.into_function::<FunctionSpi>();
+    let cs = pins.gpio17.into_push_pull_output_in_state(PinState::High);
+    let dc = pins.gpio16.into_push_pull_output();
+    let _backlight = pins.gpio20.into_push_pull_output_in_state(PinState::High);
+    let spi = rp2040_hal::spi::Spi::<_, _, _, 8>::new(pac.SPI0, (mosi, sck)).init(
+        &mut pac.RESETS,
+        125.MHz(),
+        // The ST7789's fastest write clock (16 ns a bit); halve it for long jumper wires.
+        62_500.kHz(),
+        embedded_hal::spi::MODE_0,
+    );
+    let spi = ExclusiveDevice::new_no_delay(spi, cs).unwrap();
+    let mut spi_buffer = [0u8; 512];
+    let interface = SpiInterface::new(spi, dc, &mut spi_buffer);
+    // The panel's controller is 240 × 320; this module shows 135 × 240 of it from column 52,
+    // row 40, and is turned a quarter for landscape. IPS panels need their colours inverted.
+    let mut display = Builder::new(ST7789, interface)
+        .display_size(135, 240)
+        .display_offset(52, 40)
+        .orientation(Orientation::new().rotate(Rotation::Deg90))
+        .invert_colors(ColorInversion::Inverted)
+        .init(&mut timer)
+        .unwrap();
+
+    // The camera is the display's size. `Camera` is `Copy`: core 1 gets its own.
+    let camera = demo::camera(WIDTH as u32, HEIGHT as u32).unwrap();
+    let core1_buffers = [
+        cortex_m::singleton!(: Band = [Rgb::BLACK; WIDTH * BAND_ROWS]).unwrap(),
+        cortex_m::singleton!(: Band = [Rgb::BLACK; WIDTH * BAND_ROWS]).unwrap(),
+    ];
+    let own = cortex_m::singleton!(: Band = [Rgb::BLACK; WIDTH * BAND_ROWS]).unwrap();
+
+    let start = timer.get_counter();
+    let mut multicore = Multicore::new(&mut pac.PSM, &mut pac.PPB, &mut sio.fifo);
+    let cores = multicore.cores();
+    cores[1]
+        .spawn(CORE1_STACK.take().unwrap(), move || {
+            core1(&camera, core1_buffers)
+        })
+        .unwrap();
+
+    for band in 0..BANDS {
+        if band % 2 == 0 {
+            let rows = render_band(&camera, band, own);
+            send_band(&mut display, band, &own[..rows * WIDTH]).unwrap();
+        } else {
+            // Core 1's (band / 2)-th band.
+            let slot = (band / 2) % 2;
+            let buffer = take(&RENDERED[slot]);
+            let rows = rows_in(band);
+            send_band(&mut display, band, &buffer[..rows * WIDTH]).unwrap();
+            put(&SENT[slot], buffer);
+        }
+    }
+    let elapsed = timer.get_counter() - start;
+
+    // The frame time, rendering and sending included, over the sky in the top left corner.
+    let mut text = Line::new();
+    let _ = write!(text, "{} ms, 2 cores", elapsed.to_millis());
+    let style = MonoTextStyleBuilder::new()
+        .font(&FONT_6X10)
+        .text_color(Rgb565::BLACK)
+        .background_color(Rgb565::from_rgb(demo::BACKGROUND, Point::zero()))
+        .build();
+    Text::with_baseline(text.as_str(), Point::new(2, 2), style, Baseline::Top)
+        .draw(&mut display)
+        .unwrap();
+
+    loop {
+        cortex_m::asm::wfi();
+    }
+}
+
+/// Core 1: renders the odd bands, alternating between its two buffers, and leaves each for
+/// core 0 to send.
+fn core1(camera: &Camera, buffers: [&'static mut Band; 2]) -> ! {
+    let mut fresh = buffers.map(Some);
+    for (i, band) in (1..BANDS).step_by(2).enumerate() {
+        let slot = i % 2;
+        // Each buffer is fresh the first time; after that, wait until core 0 has sent it.
+        let buffer = fresh[slot].take().unwrap_or_else(|| take(&SENT[slot]));
+        render_band(camera, band, buffer);
+        put(&RENDERED[slot], buffer);
+    }
+    loop {
+        cortex_m::asm::wfi();
+    }
+}
+
+/// The number of rows in band `band`: `BAND_ROWS`, fewer in the last.
+fn rows_in(band: usize) -> usize {
+    BAND_ROWS.min(HEIGHT - band * BAND_ROWS)
+}
+
+/// Renders band `band` into `buffer`, row by row; returns its number of rows.
+fn render_band(camera: &Camera, band: usize, buffer: &mut Band) -> usize {
+    let rows = rows_in(band);
+    let first = band * BAND_ROWS;
+    for (r, row) in buffer.chunks_exact_mut(WIDTH).take(rows).enumerate() {
+        // The row is on the camera's screen and the buffer a row long: this cannot fail.
+        render_row(&SCENE, camera, (first + r) as u32, row).unwrap();
+    }
+    rows
+}
+
+/// Sends the rendered rows of band `band` to its place on the display, converted to `Rgb565`
+/// as fixray's `Viewport` converts them (rounded per channel), in one address window.
+fn send_band<D: DrawTarget<Color = Rgb565>>(
+    display: &mut D,
+    band: usize,
+    pixels: &[Rgb],
+) -> Result<(), D::Error> {
+    let top = (band * BAND_ROWS) as i32;
+    let rows = (pixels.len() / WIDTH) as u32;
+    let area = Rectangle::new(Point::new(0, top), Size::new(WIDTH as u32, rows));
+    let colours = pixels.iter().enumerate().map(|(i, &pixel)| {
+        let at = Point::new((i % WIDTH) as i32, top + (i / WIDTH) as i32);
+        Rgb565::from_rgb(pixel, at)
+    });
+    display.fill_contiguous(&area, colours)
+}
+
+/// Leaves `buffer` in `slot` and wakes the other core.
+fn put(slot: &Slot, buffer: &'static mut Band) {
+    let previous = critical_section::with(|cs| slot.borrow_ref_mut(cs).replace(buffer));
+    // Each slot is emptied before the protocol fills it again.
+    debug_assert!(previous.is_none());
+    cortex_m::asm::sev();
+}
+
+/// Takes the buffer in `slot`, sleeping until there is one.
+fn take(slot: &Slot) -> &'static mut Band {
+    loop {
+        if let Some(buffer) = critical_section::with(|cs| slot.borrow_ref_mut(cs).take()) {
+            return buffer;
+        }
+        // An event sent since the check above makes this return at once: no wake-up is lost.
+        cortex_m::asm::wfe();
+    }
+}
+
+/// A line of text for the display, formatted without an allocator.
+struct Line {
+    bytes: [u8; 32],
+    len: usize,
+}
+
+impl Line {
+    fn new() -> Self {
+        Line {
+            bytes: [0; 32],
+            len: 0,
+        }
+    }
+
+    fn as_str(&self) -> &str {
+        // Only whole `str`s are ever appended.
+        core::str::from_utf8(&self.bytes[..self.len]).unwrap_or("")
+    }
+}
+
+impl Write for Line {
+    fn write_str(&mut self, s: &str) -> core::fmt::Result {
+        let end = self.len + s.len();
+        self.bytes
+            .get_mut(self.len..end)
+            .ok_or(core::fmt::Error)?
+            .copy_from_slice(s.as_bytes());
+        self.len = end;
+        Ok(())
+    }
+}
