@@ -41,6 +41,11 @@
 //! Run one firmware from this directory with, for example,
 //! `cargo run --release --target thumbv6m-none-eabi --bin fixed_classic`: the runners in
 //! `.cargo/config.toml` start QEMU. `scripts/firmware.sh` runs them all.
+//!
+//! One more binary, `oled` (feature `oled`, the LM3S6965EVB only), is no measurement: it draws
+//! the demo scene through `fixray::Viewport` onto the board's emulated 128 × 64 OLED with the
+//! [`oled`] module's SSD0323 driver, for `scripts/oled.sh` to capture and compare with the
+//! host's render.
 
 #![no_std]
 
@@ -61,6 +66,8 @@ pub mod exit;
 pub mod fault;
 pub mod harness;
 pub mod memory;
+#[cfg(board = "lm3s6965evb")]
+pub mod oled;
 pub mod renderer;
 pub mod stack;
 
