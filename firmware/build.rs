@@ -4,14 +4,17 @@
 use std::{env, fs, path::PathBuf};
 
 /// Target triple, board (the file `memory/{board}.x` and the cfg value), QEMU machine.
-const BOARDS: [(&str, &str, &str); 3] = [
+const BOARDS: [(&str, &str, &str); 4] = [
     ("thumbv6m-none-eabi", "microbit", "microbit"),
+    ("thumbv7m-none-eabi", "lm3s6965evb", "lm3s6965evb"),
     ("thumbv7em-none-eabihf", "mps2_an386", "mps2-an386"),
     ("riscv32imc-unknown-none-elf", "virt", "virt"),
 ];
 
 fn main() {
-    println!(r#"cargo::rustc-check-cfg=cfg(board, values("microbit", "mps2_an386", "virt"))"#);
+    println!(
+        r#"cargo::rustc-check-cfg=cfg(board, values("microbit", "lm3s6965evb", "mps2_an386", "virt"))"#
+    );
     println!("cargo::rerun-if-changed=build.rs");
     let target = env::var("TARGET").expect("cargo sets TARGET");
     // Any other target (a host `cargo check`, say) gets no board; src/lib.rs then refuses it.

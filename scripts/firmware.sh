@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Renders fixray's demo and classic scenes (160 × 128) on three microcontrollers under QEMU,
+# Renders fixray's demo and classic scenes (160 × 128) on four microcontrollers under QEMU,
 # checks every frame's hash against the host's render, and prints one row per target,
 # renderer and scene:
 #

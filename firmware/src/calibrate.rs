@@ -7,7 +7,7 @@
 use crate::counter;
 
 /// Iterations of the loop of known length: 2 × 10⁷ instructions, so that a tick of resolution
-/// (62.5 instructions at most) is a few parts per million of it, and so that on the micro:bit
+/// (80 instructions at most) is a few parts per million of it, and so that on the micro:bit
 /// it spans several SysTick wraps.
 pub const ITERATIONS: u32 = 10_000_000;
 

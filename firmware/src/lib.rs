@@ -1,4 +1,4 @@
-//! fixray's demo and classic scenes on three microcontrollers under QEMU, rendered and
+//! fixray's demo and classic scenes on four microcontrollers under QEMU, rendered and
 //! measured.
 //!
 //! Each binary renders one scene ([`Variant`]) with one [`Renderer`] — [`Fixed`], the Q16.16
@@ -23,6 +23,7 @@
 //! | target | board (QEMU machine) | instruction counter |
 //! |---|---|---|
 //! | `thumbv6m-none-eabi` | micro:bit, Cortex-M0 (`microbit`) | SysTick on the 16 MHz core clock |
+//! | `thumbv7m-none-eabi` | LM3S6965EVB, Cortex-M3 (`lm3s6965evb`) | SysTick on the 12.5 MHz core clock |
 //! | `thumbv7em-none-eabihf` | MPS2 AN386, Cortex-M4F (`mps2-an386`) | CMSDK APB timer 0, 25 MHz |
 //! | `riscv32imc-unknown-none-elf` | RV32, ESP32-C3 class (`virt`) | `minstret` |
 //!
@@ -41,13 +42,23 @@
 //! Run one firmware from this directory with, for example,
 //! `cargo run --release --target thumbv6m-none-eabi --bin fixed_classic`: the runners in
 //! `.cargo/config.toml` start QEMU. `scripts/firmware.sh` runs them all.
+//!
+//! One more binary, `oled` (feature `oled`, the LM3S6965EVB only), is no measurement: it draws
+//! the demo scene through `fixray::Viewport` onto the board's emulated 128 × 64 OLED with the
+//! [`oled`] module's SSD0323 driver, for `scripts/oled.sh` to capture and compare with the
+//! host's render.
 
 #![no_std]
 
-#[cfg(not(any(board = "microbit", board = "mps2_an386", board = "virt")))]
+#[cfg(not(any(
+    board = "microbit",
+    board = "lm3s6965evb",
+    board = "mps2_an386",
+    board = "virt"
+)))]
 compile_error!(
-    "fixray-firmware builds for thumbv6m-none-eabi, thumbv7em-none-eabihf or \
-     riscv32imc-unknown-none-elf only (pass --target)"
+    "fixray-firmware builds for thumbv6m-none-eabi, thumbv7m-none-eabi, thumbv7em-none-eabihf \
+     or riscv32imc-unknown-none-elf only (pass --target)"
 );
 
 pub mod calibrate;
@@ -56,6 +67,8 @@ pub mod exit;
 pub mod fault;
 pub mod harness;
 pub mod memory;
+#[cfg(board = "lm3s6965evb")]
+pub mod oled;
 pub mod renderer;
 pub mod stack;
 

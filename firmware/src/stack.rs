@@ -3,7 +3,7 @@
 //!
 //! The stack grows down from the top of RAM towards the end of the statics. [`paint`] fills
 //! that gap up to the current stack pointer; [`peak`] scans it from the bottom. Exceptions
-//! taken meanwhile (SysTick on the micro:bit) push onto the same stack and are counted, as
+//! taken meanwhile (SysTick on the micro:bit and the LM3S6965) push onto the same stack and are counted, as
 //! they should be.
 
 use crate::memory;

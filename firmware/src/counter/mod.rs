@@ -7,9 +7,9 @@
 //! `ticks().wrapping_sub(earlier)`, which is right while an interval stays under 2³² ticks
 //! (over 4 × 10⁹ instructions on every board).
 
-#[cfg(board = "microbit")]
+#[cfg(any(board = "microbit", board = "lm3s6965evb"))]
 mod systick;
-#[cfg(board = "microbit")]
+#[cfg(any(board = "microbit", board = "lm3s6965evb"))]
 use systick as board;
 
 #[cfg(board = "mps2_an386")]
