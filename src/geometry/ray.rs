@@ -39,6 +39,26 @@ impl Ray {
         }
     }
 
+    /// A ray from a hit point, as the renderer's shadow and mirror rays leave one: the origin
+    /// may lie anywhere a first hit can (within ±(`LIMIT` + `FAR`)), the direction is
+    /// normalised here. For tests that repeat the renderer's secondary rays by brute force.
+    // Not stable API: hidden from the docs.
+    #[doc(hidden)]
+    pub const fn from_hit_point(origin: Vec3, dir: Vec3) -> Result<Self, Error> {
+        let bound = crate::LIMIT.to_bits() + crate::FAR.to_bits();
+        if !origin.within_raw(bound) {
+            return Err(Error::OutOfRange {
+                quantity: Quantity::RayOrigin,
+                min: Fx::from_bits(-bound),
+                max: Fx::from_bits(bound),
+            });
+        }
+        match check::direction(dir, Quantity::RayDirection) {
+            Ok(dir) => Ok(Ray { origin, dir }),
+            Err(e) => Err(e),
+        }
+    }
+
     /// The origination point `p_r`.
     #[must_use]
     pub const fn origin(&self) -> Vec3 {

@@ -1262,8 +1262,9 @@ pub fn check_shadows<const N: usize>(world: &World, camera: &Camera, row: u32) {
 pub fn occluded<const N: usize>(scene: &Scene<N>, hit: &SceneHit, light: &Light) -> bool {
     let to_light = light.position() - hit.hit().point();
     let distance_squared = to_light.length_squared_wide();
-    // The shadow ray's direction is `to_light` normalised, as the renderer's is.
-    let Ok(shadow) = Ray::new(hit.hit().point(), to_light) else {
+    // The shadow ray's direction is `to_light` normalised, as the renderer's is; its origin is
+    // a hit point, which may lie past ±LIMIT (up to LIMIT + FAR).
+    let Ok(shadow) = Ray::from_hit_point(hit.hit().point(), to_light) else {
         return false; // a light at the hit point: it lights nothing there either way
     };
     scene.objects().iter().enumerate().any(|(i, object)| {
