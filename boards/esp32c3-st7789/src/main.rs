@@ -87,7 +87,8 @@ fn main() -> ! {
 
     esp_println::println!("fixray: demo scene, {WIDTH} x {HEIGHT}, {elapsed} ms");
     // The frame time, rendering and sending included, over the sky in the top left corner.
-    let mut text = Line::new();
+    // A line of text formatted without an allocator.
+    let mut text = heapless::String::<32>::new();
     let _ = write!(text, "{elapsed} ms");
     let style = MonoTextStyleBuilder::new()
         .font(&FONT_6X10)
@@ -100,37 +101,5 @@ fn main() -> ! {
 
     loop {
         delay.delay_millis(1000);
-    }
-}
-
-/// A line of text for the display, formatted without an allocator.
-struct Line {
-    bytes: [u8; 32],
-    len: usize,
-}
-
-impl Line {
-    fn new() -> Self {
-        Line {
-            bytes: [0; 32],
-            len: 0,
-        }
-    }
-
-    fn as_str(&self) -> &str {
-        // Only whole `str`s are ever appended.
-        core::str::from_utf8(&self.bytes[..self.len]).unwrap_or("")
-    }
-}
-
-impl Write for Line {
-    fn write_str(&mut self, s: &str) -> core::fmt::Result {
-        let end = self.len + s.len();
-        self.bytes
-            .get_mut(self.len..end)
-            .ok_or(core::fmt::Error)?
-            .copy_from_slice(s.as_bytes());
-        self.len = end;
-        Ok(())
     }
 }

@@ -159,7 +159,8 @@ fn main() -> ! {
     let elapsed = timer.get_counter() - start;
 
     // The frame time, rendering and sending included, over the sky in the top left corner.
-    let mut text = Line::new();
+    // A line of text formatted without an allocator.
+    let mut text = heapless::String::<32>::new();
     let _ = write!(text, "{} ms, 2 cores", elapsed.to_millis());
     let style = MonoTextStyleBuilder::new()
         .font(&FONT_6X10)
@@ -240,37 +241,5 @@ fn take(slot: &Slot) -> &'static mut Band {
         }
         // An event sent since the check above makes this return at once: no wake-up is lost.
         cortex_m::asm::wfe();
-    }
-}
-
-/// A line of text for the display, formatted without an allocator.
-struct Line {
-    bytes: [u8; 32],
-    len: usize,
-}
-
-impl Line {
-    fn new() -> Self {
-        Line {
-            bytes: [0; 32],
-            len: 0,
-        }
-    }
-
-    fn as_str(&self) -> &str {
-        // Only whole `str`s are ever appended.
-        core::str::from_utf8(&self.bytes[..self.len]).unwrap_or("")
-    }
-}
-
-impl Write for Line {
-    fn write_str(&mut self, s: &str) -> core::fmt::Result {
-        let end = self.len + s.len();
-        self.bytes
-            .get_mut(self.len..end)
-            .ok_or(core::fmt::Error)?
-            .copy_from_slice(s.as_bytes());
-        self.len = end;
-        Ok(())
     }
 }
