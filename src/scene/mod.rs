@@ -166,11 +166,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         self.objects[index] = object;
         self.object_count += 1;
         self.present = low_bits(self.object_count);
-        let mut light = 0;
-        while light < self.light_count {
-            self.cones[light][index] = ShadowCone::new(self.lights[light].position, &object.shape);
-            light += 1;
-        }
+        self.refresh_object_cones(index);
         Ok(index)
     }
 
@@ -200,13 +196,28 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         }
         self.lights[index] = light;
         self.light_count += 1;
+        self.refresh_light_cones(index);
+        Ok(index)
+    }
+
+    /// Works out again every light's shadow cone of object `index` (which must exist).
+    const fn refresh_object_cones(&mut self, index: usize) {
+        let mut light = 0;
+        while light < self.light_count {
+            self.cones[light][index] =
+                ShadowCone::new(self.lights[light].position, &self.objects[index].shape);
+            light += 1;
+        }
+    }
+
+    /// Works out again light `index`'s shadow cone of every object (the light must exist).
+    const fn refresh_light_cones(&mut self, index: usize) {
         let mut object = 0;
         while object < self.object_count {
             self.cones[index][object] =
-                ShadowCone::new(light.position, &self.objects[object].shape);
+                ShadowCone::new(self.lights[index].position, &self.objects[object].shape);
             object += 1;
         }
-        Ok(index)
     }
 
     /// Replaces object `index` (its shape, its material or both), keeping its place: the
@@ -230,9 +241,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
             .get_mut(index)
             .ok_or(Error::NoSuchObject { index, count })?;
         *slot = object;
-        for (cones, light) in self.cones.iter_mut().zip(&self.lights[..self.light_count]) {
-            cones[index] = ShadowCone::new(light.position, &object.shape);
-        }
+        self.refresh_object_cones(index);
         Ok(())
     }
 
@@ -273,10 +282,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
             .get_mut(index)
             .ok_or(Error::NoSuchLight { index, count })?;
         *slot = light;
-        let objects = &self.objects[..self.object_count];
-        for (cone, object) in self.cones[index].iter_mut().zip(objects) {
-            *cone = ShadowCone::new(light.position, &object.shape);
-        }
+        self.refresh_light_cones(index);
         Ok(())
     }
 
