@@ -3,16 +3,17 @@
 //!
 //! The picture is cut into bands of `BAND_ROWS` rows. Core 0 renders the even bands, core 1
 //! the odd ones, each with `fixray::render_row` into a band buffer of `Rgb` rows; core 0 sends
-//! every band to the display in order, converted to `Rgb565` on the way. While core 0 sends a
-//! band, core 1 is already rendering its next one into its second buffer: the SPI transfer
-//! overlaps rendering. (Core 0's own bands are sent synchronously: mipidsi drives the bus
-//! through embedded-hal's blocking `SpiDevice`, so no DMA; a band takes about 0.25 ms on the
-//! wire against about 14 ms to render, see the README.)
+//! every band to the display in order, converted to `Rgb565` on the way. The sending is by
+//! DMA (`dma_interface`): core 0 packs a band's bytes into a DMA buffer, starts the transfer
+//! and goes back to rendering while the band is on the wire. It waits for the wire only when
+//! the next band's address window is due before the last transfer has ended (a band takes
+//! about 0.3 ms on the wire, against about 16 ms to render, see the README).
 //!
 //! Core 1's two buffers travel between the cores through four one-buffer slots (one per
 //! buffer for "rendered", one per buffer for "sent"), each a `critical_section::Mutex`, so
 //! the hand-over is safe Rust: a buffer is always owned by exactly one core. A core waiting
-//! for a slot sleeps in `wfe`; the other core's `sev` after filling one wakes it.
+//! for a slot sleeps in `wfe`; the other core's `sev` after filling one wakes it. A band is
+//! packed into the DMA buffer as it is sent, so core 1 gets its buffer back at once.
 
 #![no_std]
 #![no_main]
@@ -27,17 +28,19 @@ use embedded_graphics::pixelcolor::Rgb565;
 use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Rectangle;
 use embedded_graphics::text::{Baseline, Text};
-use embedded_hal_bus::spi::ExclusiveDevice;
 use fixray::{Camera, FromRgb, Rgb, Scene, demo, render_row};
 use mipidsi::Builder;
-use mipidsi::interface::SpiInterface;
 use mipidsi::models::ST7789;
 use mipidsi::options::{ColorInversion, Orientation, Rotation};
 use panic_halt as _;
+use rp2040_hal::dma::DMAExt;
 use rp2040_hal::fugit::RateExtU32;
 use rp2040_hal::gpio::{FunctionSpi, PinState};
 use rp2040_hal::multicore::{Multicore, Stack};
 use rp2040_hal::{Sio, Timer, Watchdog, pac};
+
+mod dma_interface;
+use dma_interface::DmaInterface;
 
 /// The second-stage boot loader for the Pico's W25Q080 flash, at the start of flash.
 #[allow(unsafe_code)] // placing a static in a linker section is an unsafe attribute
@@ -53,10 +56,18 @@ const XTAL_HZ: u32 = 12_000_000;
 const WIDTH: usize = 240;
 const HEIGHT: usize = 135;
 
-/// Rows per band: small bands keep the two cores' shares even (34 bands, 17 each) and the
-/// buffers small (3 × 2 880 bytes).
-const BAND_ROWS: usize = 4;
-const BANDS: usize = HEIGHT.div_ceil(BAND_ROWS);
+/// Rows per band: small bands keep the two cores' shares even (27 bands, 14 and 13) and the
+/// buffers small (3 × 3 600 bytes of `Rgb`, 2 × 2 400 of `Rgb565` for the DMA). A band is one
+/// DMA transfer only if every band is full, so the band divides the height.
+const BAND_ROWS: usize = 5;
+const BANDS: usize = HEIGHT / BAND_ROWS;
+const _: () = assert!(
+    HEIGHT.is_multiple_of(BAND_ROWS),
+    "a band's rows must divide the height"
+);
+
+/// A band's bytes on the wire: two per `Rgb565` pixel.
+const BAND_BYTES: usize = WIDTH * BAND_ROWS * 2;
 
 /// A band of rendered rows, fixray's 3-byte colours.
 type Band = [Rgb; WIDTH * BAND_ROWS];
@@ -113,9 +124,12 @@ fn main() -> ! {
         62_500.kHz(),
         embedded_hal::spi::MODE_0,
     );
-    let spi = ExclusiveDevice::new_no_delay(spi, cs).unwrap();
-    let mut spi_buffer = [0u8; 512];
-    let interface = SpiInterface::new(spi, dc, &mut spi_buffer);
+    let dma = pac.DMA.split(&mut pac.RESETS);
+    let wire = [
+        cortex_m::singleton!(: [u8; BAND_BYTES] = [0; BAND_BYTES]).unwrap(),
+        cortex_m::singleton!(: [u8; BAND_BYTES] = [0; BAND_BYTES]).unwrap(),
+    ];
+    let interface = DmaInterface::new(dma.ch0, spi, dc, cs, wire);
     // The panel's controller is 240 × 320; this module shows 135 × 240 of it from column 52,
     // row 40, and is turned a quarter for landscape. IPS panels need their colours inverted.
     let mut display = Builder::new(ST7789, interface)
@@ -145,14 +159,13 @@ fn main() -> ! {
 
     for band in 0..BANDS {
         if band % 2 == 0 {
-            let rows = render_band(&camera, band, own);
-            send_band(&mut display, band, &own[..rows * WIDTH]).unwrap();
+            render_band(&camera, band, own);
+            send_band(&mut display, band, own).unwrap();
         } else {
             // Core 1's (band / 2)-th band.
             let slot = (band / 2) % 2;
             let buffer = take(&RENDERED[slot]);
-            let rows = rows_in(band);
-            send_band(&mut display, band, &buffer[..rows * WIDTH]).unwrap();
+            send_band(&mut display, band, buffer).unwrap();
             put(&SENT[slot], buffer);
         }
     }
@@ -192,20 +205,13 @@ fn core1(camera: &Camera, buffers: [&'static mut Band; 2]) -> ! {
     }
 }
 
-/// The number of rows in band `band`: `BAND_ROWS`, fewer in the last.
-fn rows_in(band: usize) -> usize {
-    BAND_ROWS.min(HEIGHT - band * BAND_ROWS)
-}
-
-/// Renders band `band` into `buffer`, row by row; returns its number of rows.
-fn render_band(camera: &Camera, band: usize, buffer: &mut Band) -> usize {
-    let rows = rows_in(band);
+/// Renders band `band` into `buffer`, row by row.
+fn render_band(camera: &Camera, band: usize, buffer: &mut Band) {
     let first = band * BAND_ROWS;
-    for (r, row) in buffer.chunks_exact_mut(WIDTH).take(rows).enumerate() {
+    for (r, row) in buffer.chunks_exact_mut(WIDTH).enumerate() {
         // The row is on the camera's screen and the buffer a row long: this cannot fail.
         render_row(&SCENE, camera, (first + r) as u32, row).unwrap();
     }
-    rows
 }
 
 /// Sends the rendered rows of band `band` to its place on the display, converted to `Rgb565`
@@ -216,8 +222,10 @@ fn send_band<D: DrawTarget<Color = Rgb565>>(
     pixels: &[Rgb],
 ) -> Result<(), D::Error> {
     let top = (band * BAND_ROWS) as i32;
-    let rows = (pixels.len() / WIDTH) as u32;
-    let area = Rectangle::new(Point::new(0, top), Size::new(WIDTH as u32, rows));
+    let area = Rectangle::new(
+        Point::new(0, top),
+        Size::new(WIDTH as u32, BAND_ROWS as u32),
+    );
     let colours = pixels.iter().enumerate().map(|(i, &pixel)| {
         let at = Point::new((i % WIDTH) as i32, top + (i / WIDTH) as i32);
         Rgb565::from_rgb(pixel, at)
