@@ -160,6 +160,10 @@ pub enum Quantity {
     Shininess,
     /// A material's reflectivity.
     Reflectivity,
+    /// A material's refraction weight: the share of light that passes through it.
+    Refraction,
+    /// A material's refractive index.
+    RefractiveIndex,
     /// The side of a checkerboard's squares.
     CheckerSize,
     /// Where a ray starts.
@@ -207,6 +211,8 @@ impl fmt::Display for Quantity {
             Quantity::SpecularWeight => "specular weight",
             Quantity::Shininess => "shininess",
             Quantity::Reflectivity => "reflectivity",
+            Quantity::Refraction => "refraction weight",
+            Quantity::RefractiveIndex => "refractive index",
             Quantity::CheckerSize => "checker size",
             Quantity::RayOrigin => "ray origin",
             Quantity::RayDirection => "ray direction",

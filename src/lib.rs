@@ -106,11 +106,14 @@ pub use numbers::{FAR, Fx, LIMIT, Vec3};
 // Not stable API: the integer square root the geometry uses, for tests; hidden from the docs.
 #[doc(hidden)]
 pub use numbers::isqrt;
+// Not stable API: Snell's law as the renderer applies it, for the per-ray property tests.
+#[doc(hidden)]
+pub use geometry::refract::refract;
 pub use render::{
     Camera, LookAt, MAX_PIXELS, Orbit, Pinhole, RowRays, render, render_row,
     render_row_supersampled, shoot_row, shoot_row_skipping,
 };
-pub use scene::{Background, Checker, Light, Material, Object, Rgb, Scene, SceneHit};
+pub use scene::{Background, Checker, Light, Material, Object, Refraction, Rgb, Scene, SceneHit};
 
 /// The README's Rust examples, compiled and run as doc tests.
 #[cfg(doctest)]

@@ -5,6 +5,7 @@
 pub(crate) mod hit;
 pub(crate) mod plane;
 pub(crate) mod ray;
+pub(crate) mod refract;
 pub(crate) mod shape;
 pub(crate) mod sphere;
 

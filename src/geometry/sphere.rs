@@ -177,6 +177,32 @@ impl Sphere {
         Some(t)
     }
 
+    /// Where a ray that has just entered the sphere through its surface leaves it: the far
+    /// crossing `t_close + a`, whatever the near one comes to.
+    ///
+    /// A refracted ray starts at a hit point rounded to Q16.16, which may lie a little
+    /// outside the sphere, where [`Sphere::hit_distance`] would find the near crossing at
+    /// about 0: the ray would meet the surface it has just crossed. Knowing that it entered
+    /// (it was refracted inwards there), the far crossing is the one it meets, exactly, with
+    /// no offset. Rounding may take a ray that grazes the surface past it (`d > r`); it then
+    /// leaves at its closest approach, and never behind its origin.
+    pub(crate) fn exit_distance(&self, ray: &Ray) -> Fx {
+        let to_centre = self.centre - ray.origin;
+        let t_close = ray.dir.dot_exact(to_centre);
+        // The origin lies near the surface, so |t_close| ≤ r + a little and a ≤ r: the sum
+        // is far inside FAR and Q16.16.
+        let d2 = (ray.dir.scale_unit(t_close) - to_centre).length_squared_wide();
+        let r2 = fx::wide_mul(self.radius.to_bits(), self.radius.to_bits()).unsigned_abs();
+        let a = Fx::from_bits(isqrt(r2.saturating_sub(d2)) as i32);
+        (t_close + a).max(Fx::ZERO)
+    }
+
+    /// Whether `point` lies strictly inside the sphere, compared exactly at 64 bits.
+    pub(crate) fn contains(&self, point: Vec3) -> bool {
+        let r2 = fx::wide_mul(self.radius.to_bits(), self.radius.to_bits()).unsigned_abs();
+        (point - self.centre).length_squared_wide() < r2
+    }
+
     /// The crossing ahead of a ray whose near crossing `t_close − a` came out below
     /// [`SURELY_OUTSIDE`]: the origin is classified exactly as outside, on or inside the
     /// sphere (see [`Sphere::intersect`]).

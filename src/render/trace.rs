@@ -6,6 +6,8 @@
 //! bit for bit.
 
 use crate::geometry::ray::Ray;
+use crate::geometry::refract::{refract, schlick};
+use crate::geometry::{Shape, Sphere};
 use crate::numbers::fx::{self, Fx};
 use crate::numbers::vec3::Vec3;
 use crate::scene::hit::SceneHit;
@@ -54,76 +56,219 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     }
 
     /// The colour seen along `ray` when it has this first hit (from [`Scene::shoot`]): the
-    /// background for a miss, otherwise the lit surface plus what its mirror shows (see
-    /// [`Material`](crate::Material)).
+    /// background for a miss, otherwise the lit surface plus what its mirror and its
+    /// refraction show (see [`Material`](crate::Material)).
+    ///
+    /// A hit on a mirror or a transparent surface starts a tree of secondary rays: each hit
+    /// may send on a mirror ray and a refracted ray, each weighted by the product of the
+    /// weights on its path from the eye. Rays are followed to [`Scene::depth`] generations;
+    /// a ray of the next generation sees the background. The tree is followed without
+    /// recursion, depth first, from a list of waiting rays that holds at most one ray per
+    /// generation plus one, [`Scene::MAX_DEPTH`]` + 1` = 17 in all (about 700 bytes of
+    /// stack), so the stack a pixel needs does not grow with the depth.
     #[must_use]
     pub fn shade(&self, ray: &Ray, hit: Option<&SceneHit>) -> Rgb {
         crate::scene::linear::to_rgb(self.radiance(ray, hit.copied()))
     }
 
     /// The light arriving along `ray`, whose first hit is `hit`, in linear units.
-    ///
-    /// Mirrors are followed in a loop, not by recursion: each bounce adds its surface's light
-    /// times the product of the reflectivities so far, and the ray that leaves the last
-    /// allowed bounce sees the background. The stack stays the same size at any depth.
     pub(crate) fn radiance(&self, ray: &Ray, hit: Option<SceneHit>) -> Linear {
         let Some((h, object)) = hit.and_then(|h| Some((h, self.objects().get(h.object)?))) else {
             return self.background().along(ray.dir);
         };
         // The first surface has weight 1: its light is the sum so far, exactly.
-        let light = self.local(object, &h, ray.dir);
-        if object.material.reflect == Fx::ZERO {
+        let light = self.local(object, &h, ray.dir, None);
+        if object.material.reflect == Fx::ZERO && object.material.refraction.is_none() {
             return light;
         }
-        self.reflections(light, ray.dir, &h, object.material.reflect)
+        self.secondary(light, ray.dir, &h)
     }
 
-    /// [`Scene::radiance`] past a first surface that mirrors: `sum` is that surface's own
-    /// light, and the bounces are followed from it. Kept apart so that the common matte pixel
-    /// does not pay for the loop's set-up.
+    /// [`Scene::radiance`] past a first surface that mirrors or refracts: `sum` is that
+    /// surface's own light, and the tree of secondary rays is followed from it. Kept apart so
+    /// that the common matte pixel does not pay for the list's set-up.
     #[inline(never)]
-    fn reflections(&self, mut sum: Linear, dir: Vec3, first: &SceneHit, reflect: Fx) -> Linear {
-        let mut weight = fx::mul(Fx::ONE, reflect);
-        let Some(bounced) = mirror(dir, first.hit.normal) else {
-            add(&mut sum, weight, self.background().along(dir));
-            return sum;
-        };
-        let mut ray = Ray::new_unchecked(first.hit.point, bounced);
-        let mut leaving = first.object;
-        let mut bounce = 0;
-        loop {
-            if bounce == self.depth() {
-                add(&mut sum, weight, self.background().along(ray.dir));
-                return sum;
-            }
-            let hit = self.shoot_from(&ray, Some(leaving));
-            bounce += 1;
+    fn secondary(&self, mut sum: Linear, dir: Vec3, first: &SceneHit) -> Linear {
+        let mut waiting = Waiting::new();
+        self.branch(&mut sum, &mut waiting, dir, first, false, Fx::ONE, 0);
+        while let Some(next) = waiting.pop() {
+            let hit = match next.start {
+                Start::Off(object) => self.shoot_from(&next.ray, Some(object)),
+                Start::Within(sphere) => self.shoot_within(&next.ray, sphere),
+            };
             let Some((h, object)) = hit.and_then(|h| Some((h, self.objects().get(h.object)?)))
             else {
-                add(&mut sum, weight, self.background().along(ray.dir));
-                return sum;
+                add(&mut sum, next.weight, self.background().along(next.ray.dir));
+                continue;
             };
-            add(&mut sum, weight, self.local(object, &h, ray.dir));
-            let reflect = object.material.reflect;
-            if reflect == Fx::ZERO {
-                return sum;
-            }
-            weight = fx::mul(weight, reflect);
-            let Some(bounced) = mirror(ray.dir, h.hit.normal) else {
-                add(&mut sum, weight, self.background().along(ray.dir));
-                return sum;
+            // A ray inside a sphere that meets that sphere is leaving it.
+            let leaving = match (next.start, object.shape) {
+                (Start::Within(sphere), Shape::Sphere(s)) if sphere == h.object => Some(s),
+                _ => None,
             };
-            ray = Ray::new_unchecked(h.hit.point, bounced);
-            leaving = h.object;
+            add(
+                &mut sum,
+                next.weight,
+                self.local(object, &h, next.ray.dir, leaving.as_ref()),
+            );
+            let exiting = leaving.is_some();
+            self.branch(
+                &mut sum,
+                &mut waiting,
+                next.ray.dir,
+                &h,
+                exiting,
+                next.weight,
+                next.generation,
+            );
         }
+        sum
+    }
+
+    /// The secondary rays from `hit`, reached along `dir` by a ray of weight `weight` and
+    /// generation `generation`: the mirror ray and the refracted ray its material sends on.
+    /// `exiting` says the ray travelled inside the (sphere) object it hit.
+    ///
+    /// Entering a sphere, a ray bends by `1/index` and goes on inside it; leaving, by
+    /// `index`. Where Snell's law has no solution the refracted weight joins the mirror's,
+    /// and with Fresnel weighting Schlick's share of it does. A plane is a sheet with no
+    /// thickness: its refracted ray goes on undeviated.
+    #[allow(clippy::too_many_arguments)]
+    fn branch(
+        &self,
+        sum: &mut Linear,
+        waiting: &mut Waiting,
+        dir: Vec3,
+        hit: &SceneHit,
+        exiting: bool,
+        weight: Fx,
+        generation: u8,
+    ) {
+        let Some(object) = self.objects().get(hit.object) else {
+            return;
+        };
+        let (normal, point, index) = (hit.hit.normal, hit.hit.point, hit.object);
+        let child = generation.saturating_add(1);
+        let mut reflect = object.material.reflect;
+        if let Some(refraction) = object.material.refraction {
+            let mut through = refraction.weight();
+            let refracted = match object.shape {
+                Shape::Plane(_) => Some((dir, Start::Off(index))),
+                Shape::Sphere(_) if exiting => {
+                    refract(dir, normal, refraction.index()).map(|d| (d, Start::Off(index)))
+                }
+                Shape::Sphere(_) => {
+                    refract(dir, normal, refraction.inverse).map(|d| (d, Start::Within(index)))
+                }
+            };
+            match refracted {
+                // Total internal reflection: all the refracted light is mirrored.
+                None => reflect = reflect.saturating_add(through),
+                Some((bent, start)) => {
+                    if refraction.fresnel() {
+                        // The cosine on the outside: the arriving ray's when entering, the
+                        // leaving ray's when exiting (the normal faces the arriving ray).
+                        let cos = -normal.dot(if exiting { bent } else { dir });
+                        let share = fx::mul_fits(through, schlick(refraction.r0, cos));
+                        reflect = reflect.saturating_add(share);
+                        through -= share;
+                    }
+                    let ray = Ray::new_unchecked(point, bent);
+                    self.send(sum, waiting, ray, start, fx::mul(weight, through), child);
+                }
+            }
+        }
+        if reflect == Fx::ZERO {
+            return;
+        }
+        let weight = fx::mul(weight, reflect);
+        let Some(bounced) = mirror(dir, normal) else {
+            add(sum, weight, self.background().along(dir));
+            return;
+        };
+        // A ray mirrored inside a sphere stays inside it.
+        let start = if exiting {
+            Start::Within(index)
+        } else {
+            Start::Off(index)
+        };
+        self.send(
+            sum,
+            waiting,
+            Ray::new_unchecked(point, bounced),
+            start,
+            weight,
+            child,
+        );
+    }
+
+    /// Queues a secondary ray of generation `generation`, or adds the background it sees when
+    /// that is past the scene's depth. A ray of weight 0 would add nothing and is dropped.
+    fn send(
+        &self,
+        sum: &mut Linear,
+        waiting: &mut Waiting,
+        ray: Ray,
+        start: Start,
+        weight: Fx,
+        generation: u8,
+    ) {
+        if weight == Fx::ZERO {
+            return;
+        }
+        let next = Pending {
+            ray,
+            start,
+            weight,
+            generation,
+        };
+        if generation > self.depth() || !waiting.push(next) {
+            add(sum, weight, self.background().along(ray.dir));
+        }
+    }
+
+    /// [`Scene::shoot`] for a ray that has entered sphere `within` through its surface: it
+    /// meets that sphere at the far crossing (see `Sphere::exit_distance`), the others as
+    /// any ray does. On a tie the object added first wins.
+    pub(crate) fn shoot_within(&self, ray: &Ray, within: usize) -> Option<SceneHit> {
+        let (mut best, mut nearest) = (Fx::MAX, usize::MAX);
+        for (index, object) in self.objects().iter().enumerate() {
+            let t = match object.shape {
+                Shape::Sphere(sphere) if index == within => Some(sphere.exit_distance(ray)),
+                shape => shape.hit_distance(ray),
+            };
+            if let Some(t) = t
+                && t < best
+            {
+                (best, nearest) = (t, index);
+            }
+        }
+        let hit = self.objects().get(nearest)?.shape.hit_at(ray, best);
+        Some(SceneHit {
+            hit,
+            object: nearest,
+        })
     }
 
     /// The surface's own light at a hit: ambient and diffuse times its colour, plus white
     /// highlights, from every light whose shadow ray reaches it.
-    fn local(&self, object: &Object, hit: &SceneHit, dir: Vec3) -> Linear {
+    ///
+    /// `leaving` is the sphere when the hit is on its inside, reached by a ray refracted into
+    /// it: a light outside it would have to shine through its surface, which stops shadow
+    /// rays, so only lights strictly inside it count.
+    fn local(
+        &self,
+        object: &Object,
+        hit: &SceneHit,
+        dir: Vec3,
+        leaving: Option<&Sphere>,
+    ) -> Linear {
         let (material, normal) = (&object.material, hit.hit.normal);
         let (mut diffuse, mut specular) = (Fx::ZERO, Fx::ZERO);
         let mut light_up = |index: usize, light: &Light| {
+            if leaving.is_some_and(|sphere| !sphere.contains(light.position)) {
+                return;
+            }
             let to_light = light.position - hit.hit.point;
             let distance_squared = to_light.length_squared_wide();
             let Some(l) = to_light.normalize_with_square(distance_squared) else {
@@ -199,6 +344,65 @@ impl<const N: usize, const L: usize> Scene<N, L> {
             }
         }
         false
+    }
+}
+
+/// Where a secondary ray starts, which decides how it meets the surface it leaves.
+#[derive(Clone, Copy)]
+enum Start {
+    /// Leaving object `i`'s surface outwards, or through a plane: spheres and planes are
+    /// convex, so it cannot meet `i` again and skips it.
+    Off(usize),
+    /// Inside sphere `i`, having crossed its surface inwards: it meets `i` at the far crossing.
+    Within(usize),
+}
+
+/// A secondary ray waiting to be followed.
+#[derive(Clone, Copy)]
+struct Pending {
+    ray: Ray,
+    start: Start,
+    /// The product of the weights on its path from the eye.
+    weight: Fx,
+    /// 1 for a ray leaving the first surface, one more for each surface since.
+    generation: u8,
+}
+
+/// The rays waiting to be followed, last in first out.
+///
+/// Followed depth first, the tree leaves at most one ray waiting for each generation below
+/// the one being followed, and two of that one: taking a ray of generation `g` adds at most
+/// two of `g + 1`, and rays past the scene's depth are never queued. With generations 1 to
+/// [`Scene::MAX_DEPTH`] that is at most `MAX_DEPTH + 1`.
+struct Waiting {
+    rays: [Option<Pending>; WAITING],
+    len: usize,
+}
+
+/// The capacity of [`Waiting`].
+const WAITING: usize = Scene::<1, 1>::MAX_DEPTH as usize + 1;
+
+impl Waiting {
+    fn new() -> Self {
+        Waiting {
+            rays: [None; WAITING],
+            len: 0,
+        }
+    }
+
+    /// Adds a ray; `false` if the list is full, which the bound above rules out.
+    fn push(&mut self, ray: Pending) -> bool {
+        let Some(slot) = self.rays.get_mut(self.len) else {
+            return false;
+        };
+        *slot = Some(ray);
+        self.len += 1;
+        true
+    }
+
+    fn pop(&mut self) -> Option<Pending> {
+        self.len = self.len.checked_sub(1)?;
+        self.rays.get_mut(self.len)?.take()
     }
 }
 

@@ -8,15 +8,19 @@ use crate::scene::colour::Rgb;
 /// The largest shininess [`Material::new`] accepts.
 const MAX_SHININESS: u16 = 4096;
 
-/// How a surface shades: Lambert diffuse, Blinn-Phong specular and mirror reflection.
+/// How a surface shades: Lambert diffuse, Blinn-Phong specular, mirror reflection and
+/// refraction.
 ///
 /// For a hit seen along `v` (towards the eye), lit by lights `l` with intensities `I` that are
 /// not in shadow, and with `h = (l + v)/‖l + v‖` the half vector:
 ///
 /// `local = colour · (ambient + diffuse · Σ I·max(0, n·l)) + specular · Σ I·max(0, n·h)^shininess`
 ///
-/// and the pixel is `local + reflect · (what the mirror ray sees)`, each channel clamped to
-/// 0..=255 at the end. `colour` counts 0..=255 as 0..=1.
+/// and the pixel is `local + reflect · (what the mirror ray sees) + refract · (what the
+/// refracted ray sees)`, each channel clamped to 0..=255 at the end. `colour` counts 0..=255
+/// as 0..=1. Refraction ([`Material::with_refraction`]) follows Snell's law with the
+/// material's refractive index; where it has no solution (total internal reflection) the
+/// refraction weight goes to the mirror ray instead.
 ///
 /// [`Material::new`] checks the ranges below.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -26,7 +30,42 @@ pub struct Material {
     pub(crate) specular: Fx,
     pub(crate) shininess: u16,
     pub(crate) reflect: Fx,
+    pub(crate) refraction: Option<Refraction>,
     pub(crate) checker: Option<Checker>,
+}
+
+/// How much light passes through a surface, and how it bends: see
+/// [`Material::with_refraction`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Refraction {
+    weight: Fx,
+    index: Fx,
+    /// `1/index`: the ratio of indices for a ray entering the material.
+    pub(crate) inverse: Fx,
+    /// Schlick's `R₀ = ((index − 1)/(index + 1))²`.
+    pub(crate) r0: Fx,
+    fresnel: bool,
+}
+
+impl Refraction {
+    /// Share of the refracted image added, above 0 and at most 1.
+    #[must_use]
+    pub const fn weight(&self) -> Fx {
+        self.weight
+    }
+
+    /// The refractive index `η` of the material (the medium outside counts as 1).
+    #[must_use]
+    pub const fn index(&self) -> Fx {
+        self.index
+    }
+
+    /// Whether the weight is split by Schlick's Fresnel approximation (see
+    /// [`Material::with_fresnel`]).
+    #[must_use]
+    pub const fn fresnel(&self) -> bool {
+        self.fresnel
+    }
 }
 
 impl Material {
@@ -39,6 +78,7 @@ impl Material {
             specular: Fx::ZERO,
             shininess: 1,
             reflect: Fx::ZERO,
+            refraction: None,
             checker: None,
         }
     }
@@ -110,6 +150,7 @@ impl Material {
             specular,
             shininess,
             reflect,
+            refraction: None,
             checker: None,
         })
     }
@@ -132,6 +173,79 @@ impl Material {
         let mut material = self;
         material.checker = Some(Checker { size, other });
         Ok(material)
+    }
+
+    /// The same material, transparent: `weight` (above 0, at most 1) of what a ray refracted
+    /// through the surface sees is added, bent by Snell's law for the refractive `index`
+    /// (¼ to 4; the medium outside counts as 1).
+    ///
+    /// A ray entering a sphere bends by `1/index` and meets the same sphere from inside, where
+    /// it bends by `index` on leaving; where Snell's law has no solution there (total internal
+    /// reflection) the weight goes to the mirror ray, which stays inside. A plane is a sheet
+    /// with no thickness: light passes through it undeviated. Shadow rays are stopped by
+    /// transparent objects as by any other (tinyraytracer's choice); see
+    /// [`Scene::trace`](crate::Scene::trace) for the ray tree and its depth.
+    ///
+    /// ```
+    /// use fixray::{Material, Rgb};
+    /// // tinyraytracer's glass: a faint mirror, a sharp highlight, 0.8 of the light through.
+    /// let glass = Material::new(Rgb::new(153, 179, 204), 0.0, 0.5, 125, 0.1)?
+    ///     .with_refraction(1.5, 0.8)?;
+    /// assert_eq!(glass.refraction().map(|r| r.index()), Some(fixray::Fx::from_num(1.5)));
+    /// assert!(Material::matte(Rgb::WHITE).with_refraction(0.1, 0.5).is_err());
+    /// # Ok::<(), fixray::Error>(())
+    /// ```
+    pub fn with_refraction(self, index: f32, weight: f32) -> Result<Self, Error> {
+        self.with_refraction_fx(
+            check::f32_within(index, MIN_INDEX, MAX_INDEX, Quantity::RefractiveIndex)?,
+            check::f32_within(weight, Fx::DELTA, Fx::ONE, Quantity::Refraction)?,
+        )
+    }
+
+    /// [`Material::with_refraction`] in fixed point, for `const` and `static` scenes.
+    pub const fn with_refraction_fx(self, index: Fx, weight: Fx) -> Result<Self, Error> {
+        if let Err(e) = check::within(index, MIN_INDEX, MAX_INDEX, Quantity::RefractiveIndex) {
+            return Err(e);
+        }
+        if let Err(e) = check::within(weight, Fx::DELTA, Fx::ONE, Quantity::Refraction) {
+            return Err(e);
+        }
+        // index in [¼, 4], raw in [2¹⁴, 2¹⁸]: 2³²/index lies in [2¹⁴, 2¹⁸] too, and
+        // |index − 1| < index + 1, so the quotient below is under 1.
+        let raw = index.to_bits() as i64;
+        let inverse = Fx::from_bits((((1i64 << 32) + raw / 2) / raw) as i32);
+        let (below, above) = (raw - (1 << 16), raw + (1 << 16));
+        let q = ((below << 16) + above / 2).div_euclid(above);
+        let r0 = Fx::from_bits(((q * q + (1 << 15)) >> 16) as i32);
+        let mut material = self;
+        material.refraction = Some(Refraction {
+            weight,
+            index,
+            inverse,
+            r0,
+            fresnel: false,
+        });
+        Ok(material)
+    }
+
+    /// The same material with its refraction weight split by Schlick's approximation of
+    /// Fresnel's equations: at an angle `θ` to the normal a share
+    /// `F = R₀ + (1 − R₀)(1 − cos θ)⁵`, `R₀ = ((η − 1)/(η + 1))²`, of the weight goes to the
+    /// mirror ray and the rest, `1 − F`, through the surface (`cos θ` is the outside angle's,
+    /// on whichever side the ray comes from). Without refraction it changes nothing.
+    #[must_use]
+    pub const fn with_fresnel(self) -> Self {
+        let mut material = self;
+        if let Some(refraction) = &mut material.refraction {
+            refraction.fresnel = true;
+        }
+        material
+    }
+
+    /// How the surface refracts, if it is transparent.
+    #[must_use]
+    pub const fn refraction(&self) -> Option<Refraction> {
+        self.refraction
     }
 
     /// The surface colour under full white light.
@@ -175,6 +289,10 @@ impl Material {
 const MAX_DIFFUSE: Fx = Fx::const_from_int(2);
 /// The largest specular weight [`Material::new`] accepts.
 const MAX_SPECULAR: Fx = Fx::const_from_int(16);
+/// The refractive indices [`Material::with_refraction`] accepts: past them Snell's law bends
+/// rays so far that nothing but total internal reflection is left to draw.
+const MIN_INDEX: Fx = Fx::from_bits(1 << 14);
+const MAX_INDEX: Fx = Fx::const_from_int(4);
 
 impl From<Rgb> for Material {
     fn from(colour: Rgb) -> Self {

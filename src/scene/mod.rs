@@ -12,7 +12,7 @@ pub use background::Background;
 pub use colour::Rgb;
 pub use hit::SceneHit;
 pub use light::Light;
-pub use material::{Checker, Material};
+pub use material::{Checker, Material, Refraction};
 
 use crate::check;
 use crate::error::{Error, Quantity};
@@ -122,6 +122,8 @@ pub struct Scene<const N: usize, const L: usize = 4> {
 impl<const N: usize, const L: usize> Scene<N, L> {
     /// Mirror bounces followed by default.
     pub const DEFAULT_DEPTH: u8 = 4;
+    /// The most bounces [`Scene::set_depth`] allows.
+    pub const MAX_DEPTH: u8 = 16;
 
     /// An empty scene lit by `light`, with `ambient` (0 to 1) light everywhere and
     /// `background` where rays escape (an [`Rgb`] or a [`Background`] gradient).
@@ -302,10 +304,11 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         self.shadows = on;
     }
 
-    /// Sets how many mirror bounces are followed, at most 16. The ray leaving the last one sees
-    /// only the background, so at 0 mirrors show the sky but no objects.
+    /// Sets how many generations of secondary rays (mirror and refracted rays) are followed,
+    /// at most [`Scene::MAX_DEPTH`]. A ray of the generation past the last sees only the
+    /// background, so at 0 mirrors and glass show the sky but no objects.
     pub fn set_depth(&mut self, bounces: u8) {
-        self.depth = bounces.min(16);
+        self.depth = bounces.min(Self::MAX_DEPTH);
     }
 
     /// The objects, in the order they were added.
