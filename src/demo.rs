@@ -129,17 +129,19 @@ pub fn camera(width: u32, height: u32) -> Result<Camera, Error> {
 /// (−20, 20, 20), (30, 50, −25) and (30, 20, 30) of intensity 1.5, 1.8 and 1.7; a checkerboard
 /// floor of 2-unit squares at y = −4 for |x| < 10 and −30 < z < −10; a sky gradient.
 ///
-/// fixray does not refract, so the glass sphere is a faint mirror with a sharp highlight and
-/// a little diffuse light in place of tinyraytracer's transparency.
+/// The glass is tinyraytracer's: refractive index 1.5, 0.8 of the refracted light, 0.1 of the
+/// mirror image, a highlight of 0.5 with shininess 125 and no diffuse term (no Fresnel
+/// weighting, as there). [`classic_opaque`] is the same scene with the glass's refraction
+/// left out, to show what refraction costs.
 #[must_use]
 pub const fn classic() -> Scene<8> {
     // Built once by the compiler, as [`scene`] is.
-    const CLASSIC: Scene<8> = classic_scene();
+    const CLASSIC: Scene<8> = classic_scene(true);
     CLASSIC
 }
 
-/// [`classic`], built.
-const fn classic_scene() -> Scene<8> {
+/// [`classic`], built; with `refracts` false, [`classic_opaque`].
+const fn classic_scene(refracts: bool) -> Scene<8> {
     const fn material(
         colour: Rgb,
         diffuse: i32,
@@ -166,6 +168,12 @@ const fn classic_scene() -> Scene<8> {
         Material::matte(Rgb::new(77, 77, 77))
             .with_checker_fx(Fx::const_from_int(2), Rgb::new(77, 51, 26)),
     );
+    let opaque = material(Rgb::new(153, 179, 204), 0, 5, 125, 1);
+    let glass = if refracts {
+        valid(opaque.with_refraction_fx(Fx::from_bits(3 << 15), tenths(8)))
+    } else {
+        opaque
+    };
     let sky = Background {
         top: Rgb::new(20, 90, 170),
         bottom: Rgb::new(51, 178, 204),
@@ -177,7 +185,7 @@ const fn classic_scene() -> Scene<8> {
         &[
             Object::new(Shape::Plane(floor), floor_material),
             sphere(0, material(Rgb::new(102, 102, 77), 6, 3, 50, 1)), // ivory
-            sphere(1, material(Rgb::new(153, 179, 204), 1, 5, 125, 3)), // glass
+            sphere(1, glass),                                         // glass
             sphere(2, material(Rgb::new(77, 26, 26), 9, 1, 10, 0)),   // red rubber
             sphere(3, material(Rgb::WHITE, 0, 100, 1425, 8)),         // mirror
         ],
@@ -185,6 +193,13 @@ const fn classic_scene() -> Scene<8> {
     valid(scene.add_light(light(30, 50, -25, 18)));
     valid(scene.add_light(light(30, 20, 30, 17)));
     scene
+}
+
+/// [`classic`] with its glass opaque: the same material without refraction.
+#[must_use]
+pub const fn classic_opaque() -> Scene<8> {
+    const OPAQUE: Scene<8> = classic_scene(false);
+    OPAQUE
 }
 
 /// Vertical field of view of the classic camera, as in tinyraytracer.

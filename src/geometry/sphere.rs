@@ -197,6 +197,12 @@ impl Sphere {
         (t_close + a).max(Fx::ZERO)
     }
 
+    /// Whether `hit`, a hit on this sphere, was reached from inside it: its normal, which
+    /// faces the ray, points towards the centre's side of the surface.
+    pub(crate) fn reached_from_inside(&self, hit: &Hit) -> bool {
+        hit.normal.dot_wide(hit.point - self.centre) < 0
+    }
+
     /// Whether `point` lies strictly inside the sphere, compared exactly at 64 bits.
     pub(crate) fn contains(&self, point: Vec3) -> bool {
         let r2 = fx::wide_mul(self.radius.to_bits(), self.radius.to_bits()).unsigned_abs();

@@ -90,7 +90,8 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     #[inline(never)]
     fn secondary(&self, mut sum: Linear, dir: Vec3, first: &SceneHit) -> Linear {
         let mut waiting = Waiting::new();
-        self.branch(&mut sum, &mut waiting, dir, first, false, Fx::ONE, 0);
+        let exiting = self.exits(first, None);
+        self.branch(&mut sum, &mut waiting, dir, first, exiting, Fx::ONE, 0);
         while let Some(next) = waiting.pop() {
             let hit = match next.start {
                 Start::Off(object) => self.shoot_from(&next.ray, Some(object)),
@@ -101,9 +102,13 @@ impl<const N: usize, const L: usize> Scene<N, L> {
                 add(&mut sum, next.weight, self.background().along(next.ray.dir));
                 continue;
             };
-            // A ray inside a sphere that meets that sphere is leaving it.
-            let leaving = match (next.start, object.shape) {
-                (Start::Within(sphere), Shape::Sphere(s)) if sphere == h.object => Some(s),
+            let within = match next.start {
+                Start::Within(sphere) => Some(sphere),
+                Start::Off(_) => None,
+            };
+            let exiting = self.exits(&h, within);
+            let leaving = match object.shape {
+                Shape::Sphere(sphere) if exiting => Some(sphere),
                 _ => None,
             };
             add(
@@ -111,7 +116,6 @@ impl<const N: usize, const L: usize> Scene<N, L> {
                 next.weight,
                 self.local(object, &h, next.ray.dir, leaving.as_ref()),
             );
-            let exiting = leaving.is_some();
             self.branch(
                 &mut sum,
                 &mut waiting,
@@ -125,9 +129,21 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         sum
     }
 
+    /// Whether `hit` is on the inside of a sphere, so that a ray refracted there leaves it:
+    /// known when the ray travelled inside that sphere (`within`), and otherwise read from the
+    /// hit (an eye or a ray starting inside a sphere meets its far side).
+    fn exits(&self, hit: &SceneHit, within: Option<usize>) -> bool {
+        match self.objects().get(hit.object).map(|object| object.shape) {
+            Some(Shape::Sphere(sphere)) => {
+                within == Some(hit.object) || sphere.reached_from_inside(&hit.hit)
+            }
+            _ => false,
+        }
+    }
+
     /// The secondary rays from `hit`, reached along `dir` by a ray of weight `weight` and
     /// generation `generation`: the mirror ray and the refracted ray its material sends on.
-    /// `exiting` says the ray travelled inside the (sphere) object it hit.
+    /// `exiting` says the hit is on the inside of a sphere (see [`Scene::exits`]).
     ///
     /// Entering a sphere, a ray bends by `1/index` and goes on inside it; leaving, by
     /// `index`. Where Snell's law has no solution the refracted weight joins the mirror's,
