@@ -10,7 +10,8 @@
 # Each row is one of the firmware's binaries, which renders one scene with one renderer:
 # `fixed` (Q16.16), `reference` (the f64 reference model) or `reference_f32` (the same model in
 # f32), on the demo scene or the classic one (`_classic`), the latter also without shadow rays
-# (`_noshadow`) and without mirrors (`_nomirror`) to show what each costs.
+# (`_noshadow`), without mirrors (`_nomirror`) and with its glass opaque (`_opaque`) to show what
+# each costs.
 #
 # Usage: scripts/firmware.sh [--markdown]
 #
@@ -80,7 +81,7 @@ if ((${#disagree[@]})); then
     exit 2
 fi
 bins=(fixed fixed_noshadow fixed_shoot fixed_rays
-    fixed_classic fixed_classic_noshadow fixed_classic_nomirror
+    fixed_classic fixed_classic_noshadow fixed_classic_nomirror fixed_classic_opaque
     reference reference_classic reference_f32 reference_f32_classic)
 
 # --- What it needs -------------------------------------------------------------------------
@@ -246,10 +247,11 @@ cost_rows=(
     "fixed-classic|\`fixed-classic\`: Q16.16, classic scene"
     "fixed-classic-noshadow|\`fixed-classic-noshadow\`: classic, no shadow rays"
     "fixed-classic-nomirror|\`fixed-classic-nomirror\`: classic, no mirrors"
+    "fixed-classic-opaque|\`fixed-classic-opaque\`: classic, glass without refraction"
     "reference-f32-classic|\`reference-f32-classic\`"
     "reference-f64-classic|\`reference-f64-classic\`"
 )
-memory_rows=(fixed reference-f32 reference-f64 fixed-classic reference-f64-classic)
+memory_rows=(fixed reference-f32 reference-f64 fixed-classic fixed-classic-opaque reference-f64-classic)
 
 grouped() { # a whole number with its thousands apart, as the README writes them: 46 064
     local n=$1 out=""

@@ -9,7 +9,7 @@
 //! | binary | renders |
 //! |---|---|
 //! | `fixed`, `fixed_classic` | the demo and the classic scene in Q16.16 |
-//! | `fixed_classic_noshadow`, `fixed_classic_nomirror` | the classic scene without shadow rays, without mirrors |
+//! | `fixed_classic_noshadow`, `fixed_classic_nomirror`, `fixed_classic_opaque` | the classic scene without shadow rays, without mirrors, with its glass opaque (no refraction) |
 //! | `reference`, `reference_classic` | both scenes by the `f64` reference (soft-float everywhere) |
 //! | `reference_f32`, `reference_f32_classic` | both scenes by the reference in `f32` (the Cortex-M4F's FPU) |
 //! | `draw` | both scenes through `Viewport::render` and a `Picture` onto an `Rgb565` display: the drawing layer's stack |

@@ -33,16 +33,20 @@ pub enum Variant {
     ///
     /// Not `set_depth(0)`: at depth 0 a mirror still adds the sky along its mirror ray.
     ClassicNoMirror,
+    /// `demo::classic_opaque()`: the classic scene with its glass not refracting, what
+    /// refraction costs.
+    ClassicOpaque,
 }
 
 impl Variant {
     /// All of them.
-    pub const ALL: [Variant; 5] = [
+    pub const ALL: [Variant; 6] = [
         Variant::Demo,
         Variant::DemoNoShadow,
         Variant::Classic,
         Variant::ClassicNoShadow,
         Variant::ClassicNoMirror,
+        Variant::ClassicOpaque,
     ];
 
     /// What follows the renderer's name in the table: `fixed-classic-noshadow`, say.
@@ -54,6 +58,7 @@ impl Variant {
             Variant::Classic => "-classic",
             Variant::ClassicNoShadow => "-classic-noshadow",
             Variant::ClassicNoMirror => "-classic-nomirror",
+            Variant::ClassicOpaque => "-classic-opaque",
         }
     }
 
@@ -73,6 +78,7 @@ impl Variant {
                 scene
             }
             Variant::ClassicNoMirror => without_mirrors(&demo::classic())?,
+            Variant::ClassicOpaque => demo::classic_opaque(),
         })
     }
 
@@ -94,7 +100,7 @@ impl Variant {
     }
 }
 
-/// `scene` with every material's mirror turned off, all else kept.
+/// `scene` with every material's mirror turned off, all else (refraction too) kept.
 ///
 /// It holds two scenes at once. Never inlined, so that they take stack only while it runs,
 /// during the set-up, and not in the frame that renders.
@@ -112,6 +118,12 @@ fn without_mirrors(scene: &Scene<8>) -> Result<Scene<8>, Error> {
         )?;
         if let Some(checker) = m.checker() {
             matte = matte.with_checker_fx(checker.size(), checker.other())?;
+        }
+        if let Some(refraction) = m.refraction() {
+            matte = matte.with_refraction_fx(refraction.index(), refraction.weight())?;
+            if refraction.fresnel() {
+                matte = matte.with_fresnel();
+            }
         }
         out.set_material(index, matte)?;
     }
