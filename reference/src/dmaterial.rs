@@ -1,9 +1,11 @@
-//! [`DMaterial`] and [`DChecker`]: what a surface is made of, and a two-colour pattern.
+//! [`DMaterial`], [`DRefraction`] and [`DChecker`]: what a surface is made of, how light
+//! passes through it, and a two-colour pattern.
 
 use super::Real;
 use fixray::Rgb;
 
-/// How a surface answers light: Lambert diffuse, a white Blinn-Phong highlight and a mirror.
+/// How a surface answers light: Lambert diffuse, a white Blinn-Phong highlight, a mirror and
+/// glass.
 ///
 /// At a hit point seen along the unit direction `d`, with the unit normal `n` turned to face
 /// the eye and the surface colour `C` (counted 0..=1 for 0..=255), each light `i` at
@@ -13,7 +15,8 @@ use fixray::Rgb;
 ///
 /// `local = C·(ambient + diffuse·Σ I_i·(n·l_i)) + specular·Σ I_i·clamp(n·h_i, 0, 1)^shininess`
 ///
-/// and a mirror adds `reflect` times what the reflected ray sees (see
+/// and a mirror adds `reflect` times what the reflected ray sees, glass ([`DRefraction`])
+/// its weight times what the refracted ray sees (see
 /// [`DScene::radiance`](super::DScene::radiance)).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct DMaterial<F: Real = f64> {
@@ -29,6 +32,25 @@ pub struct DMaterial<F: Real = f64> {
     pub reflect: F,
     /// A checkerboard replacing `colour` on a plane.
     pub checker: Option<DChecker<F>>,
+    /// Light let through, for a transparent surface.
+    pub refract: Option<DRefraction<F>>,
+}
+
+/// Glass: how much light a surface lets through and how it bends it.
+///
+/// The medium around every object has index 1. Crossing a surface from index `η₁` into index
+/// `η₂`, a ray at an angle `θ₁` to the normal goes on at `θ₂` with `η₁·sin θ₁ = η₂·sin θ₂`
+/// (Snell's law) in the plane of the ray and the normal; where `sin θ₂` would exceed 1 no
+/// light passes and all of it is reflected (total internal reflection).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DRefraction<F: Real = f64> {
+    /// The refractive index inside the object.
+    pub index: F,
+    /// Share of the refracted ray's light added.
+    pub weight: F,
+    /// Whether Schlick's approximation of Fresnel's equations moves a share of `weight` to
+    /// the mirror ray.
+    pub fresnel: bool,
 }
 
 impl<F: Real> DMaterial<F> {
@@ -42,6 +64,7 @@ impl<F: Real> DMaterial<F> {
             shininess: 1,
             reflect: F::ZERO,
             checker: None,
+            refract: None,
         }
     }
 }

@@ -1,6 +1,6 @@
 //! [`DScene`]: the objects, the lights, and the chapter's `shoot`.
 
-use super::{DHit, DLight, DObject, DRay, Real};
+use super::{DHit, DLight, DObject, DRay, DShape, Real};
 use fixray::{Background, Rgb};
 
 /// A scene of up to `N` objects and `L` point lights, with an ambient term, a background,
@@ -130,6 +130,31 @@ impl<const N: usize, const L: usize, F: Real> DScene<N, L, F> {
                 })
             })
             // `min_by` would keep the last of equals; the earlier object must win a tie.
+            .fold(None, |nearest: Option<DHit<F>>, hit| match nearest {
+                Some(best) if best.t <= hit.t => Some(best),
+                _ => Some(hit),
+            })
+    }
+
+    /// [`shoot`](Self::shoot) for a ray that has just crossed the surface of object `inside`,
+    /// a sphere, inwards (or been mirrored on its inner side): that sphere is met where the
+    /// ray leaves it ([`DSphere::exit`](super::DSphere::exit)), every other object as usual.
+    /// If `inside` is not a sphere it is skipped, as by [`shoot_from`](Self::shoot_from).
+    pub(super) fn shoot_inside(&self, ray: &DRay<F>, inside: usize) -> Option<DHit<F>> {
+        self.objects
+            .iter()
+            .enumerate()
+            .filter_map(|(index, object)| {
+                let hit = match object.shape {
+                    DShape::Sphere(sphere) if index == inside => Some(sphere.exit(ray)),
+                    _ if index == inside => None,
+                    shape => shape.intersect(ray),
+                }?;
+                Some(DHit {
+                    object: index,
+                    ..hit
+                })
+            })
             .fold(None, |nearest: Option<DHit<F>>, hit| match nearest {
                 Some(best) if best.t <= hit.t => Some(best),
                 _ => Some(hit),

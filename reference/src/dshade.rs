@@ -1,57 +1,111 @@
-//! Shading in `f64` (or `f32`): lights, shadows, highlights and mirrors, as [`DScene::radiance`].
+//! Shading in `f64` (or `f32`): lights, shadows, highlights, mirrors and glass, as
+//! [`DScene::radiance`].
 
 use super::dcolour::{DColour, add_weighted, background, linear};
-use super::{DHit, DObject, DRay, DScene, DVec3, Real};
+use super::{DHit, DObject, DRay, DScene, DShape, DVec3, Real};
 
 impl<const N: usize, const L: usize, F: Real> DScene<N, L, F> {
     /// The light arriving along `ray`, whose first hit is `hit`, in linear units (1.0 for a
     /// channel of 255), before clamping.
     ///
-    /// With `d` the direction of the ray being followed, the colour is summed as the ray
-    /// bounces, starting from weight 1:
+    /// With `d` the direction of the ray being followed and `n` the unit normal at its hit
+    /// turned to face it:
     ///
-    /// 1. no hit: add `weight ·` the background along `d`, and stop;
-    /// 2. a hit: add `weight ·` the surface's own light (the `local` term of
-    ///    [`DMaterial`](super::DMaterial)), and stop unless the material reflects;
-    /// 3. a mirror: multiply the weight by `reflect` and leave the hit point along
-    ///    `r = d − 2(d·n)n` (renormalised), `n` the normal facing the ray. The mirror ray is
-    ///    shot among the other objects and the sum goes on from step 1, at most
-    ///    [`depth`](Self::depth) times; the mirror ray after that sees only the background.
+    /// 1. no hit: the background along `d`;
+    /// 2. a hit: the surface's own light (the `local` term of [`DMaterial`](super::DMaterial)),
+    ///    plus, for a mirror, `reflect ·` what the mirror ray `r = d − 2(d·n)n` sees, and for
+    ///    glass, its weight `·` what the refracted ray sees, bent by Snell's law; where no
+    ///    light passes (total internal reflection) the glass's weight joins the mirror's.
+    ///    With Fresnel weighting, Schlick's share `R₀ + (1 − R₀)(1 − cos θ)⁵` of the glass's
+    ///    weight joins the mirror's and the rest passes, `θ` the larger of the two angles to
+    ///    the normal and `R₀ = ((η − 1)/(η + 1))²`.
     ///
-    /// So depth 0 still adds `reflect ·` the background seen along the first mirror ray; it
-    /// stops mirrors showing other objects, not mirrors altogether.
+    /// Secondary rays start on the surface they leave. A ray going outwards from a sphere, or
+    /// through or off a plane, cannot meet that convex surface again and skips it; a ray going
+    /// into a sphere (refracted into it, or mirrored on its inner side) meets it where it
+    /// leaves ([`DSphere::exit`](super::DSphere::exit)). Whether a sphere is hit on its inside
+    /// is read from the hit: the ray is leaving it when `d` points along the outward normal.
+    ///
+    /// The eye's ray is generation 0 and a ray sent from a hit of generation `g` is `g + 1`;
+    /// a ray past [`depth`](Self::depth) sees only the background. So depth 0 still adds
+    /// `reflect ·` the background seen along the first mirror ray.
     ///
     /// A hit whose `object` is not in the scene counts as a miss.
     #[must_use]
     pub fn radiance(&self, ray: &DRay<F>, hit: Option<&DHit<F>>) -> DColour<F> {
-        let mut sum = [F::ZERO; 3];
-        let mut weight = F::ONE;
-        let mut dir = ray.dir();
-        let mut hit = hit.copied();
-        let mut bounce: u8 = 0;
-        loop {
-            let Some((h, object)) = hit.and_then(|h| Some((h, self.objects().get(h.object)?)))
-            else {
-                add_weighted(&mut sum, weight, background(&self.background(), dir));
-                return sum;
+        self.seen(ray.dir(), hit.copied(), 0)
+    }
+
+    /// What a ray of `generation` going along `dir` sees at `hit`: steps 1 and 2 of
+    /// [`radiance`](Self::radiance). Recursive: the depth of the recursion is the scene's
+    /// depth plus one.
+    fn seen(&self, dir: DVec3<F>, hit: Option<DHit<F>>, generation: u8) -> DColour<F> {
+        let Some((h, object)) = hit.and_then(|h| Some((h, self.objects().get(h.object)?))) else {
+            return background(&self.background(), dir);
+        };
+        let n = facing(h.normal, dir);
+        // A sphere's normal points outward: a ray along it is leaving the sphere.
+        let inside = match object.shape {
+            DShape::Sphere(_) => h.normal.dot(dir) > F::ZERO,
+            DShape::Plane(_) => false,
+        };
+        let mut sum = self.local(object, &h, n, dir, inside);
+        let material = &object.material;
+        let mut reflect = material.reflect;
+        if let Some(glass) = material.refract {
+            let mut weight = glass.weight;
+            let (bent, into) = match object.shape {
+                // A sheet with no thickness: the ray goes on as it was.
+                DShape::Plane(_) => (Some(dir), false),
+                DShape::Sphere(_) if inside => (snell(dir, n, glass.index), false),
+                DShape::Sphere(_) => (snell(dir, n, F::ONE / glass.index), true),
             };
-            let n = facing(h.normal, dir);
-            add_weighted(&mut sum, weight, self.local(object, &h, n, dir));
-            let reflect = object.material.reflect;
-            if reflect == F::ZERO {
-                return sum;
+            match bent {
+                None => reflect += weight,
+                Some(bent) => {
+                    if glass.fresnel {
+                        let (cos_in, cos_out) = (-n.dot(dir), -n.dot(bent));
+                        let cos = if cos_in < cos_out { cos_in } else { cos_out };
+                        let share = weight * schlick(glass.index, cos);
+                        reflect += share;
+                        weight = weight - share;
+                    }
+                    let along = DRay::new_unchecked(h.point, bent);
+                    let seen = self.through(&along, h.object, into, generation);
+                    add_weighted(&mut sum, weight, seen);
+                }
             }
-            weight *= reflect;
-            dir = (dir - n * (F::TWO * dir.dot(n)))
+        }
+        if reflect > F::ZERO {
+            let r = (dir - n * (F::TWO * dir.dot(n)))
                 .try_normalize()
                 .unwrap_or(dir);
-            if bounce == self.depth() {
-                add_weighted(&mut sum, weight, background(&self.background(), dir));
-                return sum;
-            }
-            hit = self.shoot_from(&DRay::new_unchecked(h.point, dir), Some(h.object));
-            bounce += 1;
+            // Mirrored on the inside of a sphere, the ray stays inside it.
+            let seen = self.through(
+                &DRay::new_unchecked(h.point, r),
+                h.object,
+                inside,
+                generation,
+            );
+            add_weighted(&mut sum, reflect, seen);
         }
+        sum
+    }
+
+    /// What a secondary ray sent by a hit of `generation` on object `from` sees: the
+    /// background past the depth, else what it meets. `into` says it goes into the sphere
+    /// `from` (and meets it again where it leaves); otherwise it skips `from`.
+    fn through(&self, ray: &DRay<F>, from: usize, into: bool, generation: u8) -> DColour<F> {
+        let generation = generation.saturating_add(1);
+        if generation > self.depth() {
+            return background(&self.background(), ray.dir());
+        }
+        let hit = if into {
+            self.shoot_inside(ray, from)
+        } else {
+            self.shoot_from(ray, Some(from))
+        };
+        self.seen(ray.dir(), hit, generation)
     }
 
     /// The light a surface gives off by itself at `hit`, seen along `d`, with `n` its unit
@@ -62,10 +116,26 @@ impl<const N: usize, const L: usize, F: Real> DScene<N, L, F> {
     /// summed over the lights in front of the surface (`n·l > 0`) and, with shadows on, not
     /// hidden by another object; `C` is the colour at the point (a checkerboard's square on a
     /// plane) and `h` the unit half vector of `l` and `−d`.
-    fn local(&self, object: &DObject<F>, hit: &DHit<F>, n: DVec3<F>, d: DVec3<F>) -> DColour<F> {
+    ///
+    /// `inside` says the hit is on the inner side of a sphere: the sphere's own surface then
+    /// stands between the point and every light outside it (glass stops shadow rays as any
+    /// object does), so only lights strictly inside the sphere count, with shadows on or off.
+    fn local(
+        &self,
+        object: &DObject<F>,
+        hit: &DHit<F>,
+        n: DVec3<F>,
+        d: DVec3<F>,
+        inside: bool,
+    ) -> DColour<F> {
         let material = &object.material;
         let (mut diffuse, mut specular) = (F::ZERO, F::ZERO);
         for light in self.lights() {
+            if let (true, DShape::Sphere(sphere)) = (inside, object.shape)
+                && !sphere.contains(light.position)
+            {
+                continue;
+            }
             let Some((l, distance)) = light.seen_from(hit.point) else {
                 continue;
             };
@@ -116,6 +186,32 @@ fn facing<F: Real>(normal: DVec3<F>, dir: DVec3<F>) -> DVec3<F> {
     } else {
         -normal
     }
+}
+
+/// The direction a unit ray `d` takes through a surface with unit normal `n` facing it, from
+/// index `η₁` into `η₂` with `ratio = η₁/η₂`, or `None` where no light passes.
+///
+/// Split `d` into its part along the normal, `−cos θ₁·n`, and its part in the surface,
+/// `t = d + cos θ₁·n` of length `sin θ₁`. Snell's law scales the part in the surface by the
+/// ratio, `t₂ = ratio·t` with `‖t₂‖ = sin θ₂`, and the unit direction beyond is
+/// `t₂ − √(1 − ‖t₂‖²)·n`: no light passes when `‖t₂‖ > 1`.
+pub(crate) fn snell<F: Real>(d: DVec3<F>, n: DVec3<F>, ratio: F) -> Option<DVec3<F>> {
+    let cos = -n.dot(d);
+    let along_surface = (d + n * cos) * ratio;
+    let sin2 = along_surface.length_squared();
+    if sin2 > F::ONE {
+        return None;
+    }
+    (along_surface - n * (F::ONE - sin2).sqrt()).try_normalize()
+}
+
+/// Schlick's share of light reflected at an angle with cosine `cos` to the normal, on a
+/// surface between indices 1 and `index`.
+fn schlick<F: Real>(index: F, cos: F) -> F {
+    let r0 = (index - F::ONE) / (index + F::ONE);
+    let r0 = r0 * r0;
+    let x = F::ONE - unit_clamp(cos);
+    r0 + (F::ONE - r0) * x.powi(5)
 }
 
 /// `x` clamped to `[0, 1]`, NaN to 0: `fmin(1, fmax(0, x))`.

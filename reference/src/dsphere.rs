@@ -87,6 +87,36 @@ impl<F: Real> DSphere<F> {
             object: 0,
         })
     }
+
+    /// Where a ray that has just crossed the surface inwards (its origin on the sphere, its
+    /// direction into it) leaves the sphere again: the far crossing `t_close + a`.
+    ///
+    /// [`intersect`](Self::intersect) would decide between the crossings by the sign of
+    /// `‖p_r − c‖² − r²`, which for an origin on the surface is rounding; here the ray is
+    /// known to be inside. A ray running along the surface (`d² ≥ r²` by rounding) leaves at
+    /// once, at `t_close` or 0. The normal points outward, as from `intersect`.
+    #[must_use]
+    pub fn exit(&self, ray: &DRay<F>) -> DHit<F> {
+        let t_close = ray.dir().dot(self.centre - ray.origin());
+        let d2 = (ray.at(t_close) - self.centre).length_squared();
+        let r2 = self.radius * self.radius;
+        let a = if d2 < r2 { (r2 - d2).sqrt() } else { F::ZERO };
+        let t = t_close + a;
+        let t = if t > F::ZERO { t } else { F::ZERO };
+        let point = ray.at(t);
+        DHit {
+            t,
+            point,
+            normal: (point - self.centre) / self.radius,
+            object: 0,
+        }
+    }
+
+    /// Whether `point` lies strictly inside the sphere.
+    #[must_use]
+    pub fn contains(&self, point: DVec3<F>) -> bool {
+        (point - self.centre).length_squared() < self.radius * self.radius
+    }
 }
 
 #[cfg(test)]

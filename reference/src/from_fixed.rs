@@ -7,7 +7,9 @@
 //! all three components by one positive number keeps their order, so a plane's `(u, v)` axes
 //! ([`DPlane::coords`]) are the ones the fixed plane chose.
 
-use super::{DChecker, DLight, DMaterial, DObject, DPlane, DScene, DShape, DSphere, DVec3, Real};
+use super::{
+    DChecker, DLight, DMaterial, DObject, DPlane, DRefraction, DScene, DShape, DSphere, DVec3, Real,
+};
 use fixray::Fx;
 
 /// The Q16.16 number in `F`: exact in `f64`, the nearest `f32` in `f32`.
@@ -39,6 +41,11 @@ impl<F: Real> From<fixray::Material> for DMaterial<F> {
             shininess: m.shininess(),
             reflect: f(m.reflect()),
             checker: m.checker().map(DChecker::from),
+            refract: m.refraction().map(|r| DRefraction {
+                index: f(r.index()),
+                weight: f(r.weight()),
+                fresnel: r.fresnel(),
+            }),
         }
     }
 }
@@ -156,6 +163,7 @@ mod tests {
             shininess: 50,
             reflect: fx(0.1).to_num(),
             checker: None,
+            refract: None,
         };
         let board = DMaterial {
             checker: Some(DChecker {
@@ -169,6 +177,27 @@ mod tests {
             DObject::new(plane.into(), board),
         ];
         assert_eq!(twin.objects(), expected);
+    }
+
+    #[test]
+    fn glass_keeps_its_index_weight_and_fresnel_choice() {
+        let glass = Material::matte(Rgb::WHITE)
+            .with_refraction(1.5, 0.8)
+            .unwrap()
+            .with_fresnel();
+        let twin = DMaterial::<f64>::from(glass);
+        assert_eq!(
+            twin.refract,
+            Some(DRefraction {
+                index: 1.5,
+                weight: Fx::from_num(0.8f32).to_num(),
+                fresnel: true,
+            })
+        );
+        assert_eq!(
+            DMaterial::<f64>::from(Material::matte(Rgb::WHITE)).refract,
+            None
+        );
     }
 
     #[test]

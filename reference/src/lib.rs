@@ -81,7 +81,7 @@ pub use dcolour::DColour;
 pub use demo::{classic_camera, demo_camera};
 pub use dhit::DHit;
 pub use dlight::DLight;
-pub use dmaterial::{DChecker, DMaterial};
+pub use dmaterial::{DChecker, DMaterial, DRefraction};
 pub use dobject::{DObject, DShape};
 pub use dplane::DPlane;
 pub use dray::DRay;

@@ -42,7 +42,7 @@ pub fn refract(dir: Vec3, normal: Vec3, ratio: Fx) -> Option<Vec3> {
 
 /// Schlick's approximation of the share of light a surface reflects:
 /// `R₀ + (1 − R₀)(1 − cos θ)⁵` with `R₀ = ((η − 1)/(η + 1))²`, for `cos θ` in `[0, 1]` the
-/// cosine of the angle on the outside of the surface (the lower-index side) and `r0` its
+/// cosine of the larger of the two angles (the one on the lower-index side) and `r0` its
 /// `R₀`. The result lies in `[R₀, 1]`.
 pub(crate) fn schlick(r0: Fx, cos: Fx) -> Fx {
     let x = Fx::ONE - cos.max(Fx::ZERO).min(Fx::ONE);

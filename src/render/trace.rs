@@ -76,8 +76,13 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         let Some((h, object)) = hit.and_then(|h| Some((h, self.objects().get(h.object)?))) else {
             return self.background().along(ray.dir);
         };
+        // A sphere seen from inside (the eye within it) is lit only from within, as below.
+        let leaving = match object.shape {
+            Shape::Sphere(sphere) if sphere.reached_from_inside(&h.hit) => Some(sphere),
+            _ => None,
+        };
         // The first surface has weight 1: its light is the sum so far, exactly.
-        let light = self.local(object, &h, ray.dir, None);
+        let light = self.local(object, &h, ray.dir, leaving.as_ref());
         if object.material.reflect == Fx::ZERO && object.material.refraction.is_none() {
             return light;
         }
@@ -182,9 +187,10 @@ impl<const N: usize, const L: usize> Scene<N, L> {
                 None => reflect = reflect.saturating_add(through),
                 Some((bent, start)) => {
                     if refraction.fresnel() {
-                        // The cosine on the outside: the arriving ray's when entering, the
-                        // leaving ray's when exiting (the normal faces the arriving ray).
-                        let cos = -normal.dot(if exiting { bent } else { dir });
+                        // Schlick's cosine is that of the larger angle, on the side of the
+                        // lower index (the normal faces the arriving ray, and the bent ray
+                        // goes on through the surface).
+                        let cos = (-normal.dot(dir)).min(-normal.dot(bent));
                         let share = fx::mul_fits(through, schlick(refraction.r0, cos));
                         reflect = reflect.saturating_add(share);
                         through -= share;
@@ -269,9 +275,9 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// The surface's own light at a hit: ambient and diffuse times its colour, plus white
     /// highlights, from every light whose shadow ray reaches it.
     ///
-    /// `leaving` is the sphere when the hit is on its inside, reached by a ray refracted into
-    /// it: a light outside it would have to shine through its surface, which stops shadow
-    /// rays, so only lights strictly inside it count.
+    /// `leaving` is the sphere when the hit is on its inside: a light outside it would have
+    /// to shine through its own surface, so only lights strictly inside it count, shadows on
+    /// or off (as a surface facing away from a light is never lit by it).
     fn local(
         &self,
         object: &Object,

@@ -183,7 +183,8 @@ impl Material {
     /// it bends by `index` on leaving; where Snell's law has no solution there (total internal
     /// reflection) the weight goes to the mirror ray, which stays inside. A plane is a sheet
     /// with no thickness: light passes through it undeviated. Shadow rays are stopped by
-    /// transparent objects as by any other (tinyraytracer's choice); see
+    /// transparent objects as by any other (tinyraytracer's choice), so a point on the inside
+    /// of a sphere is lit only by lights inside it; see
     /// [`Scene::trace`](crate::Scene::trace) for the ray tree and its depth.
     ///
     /// ```
@@ -231,8 +232,8 @@ impl Material {
     /// The same material with its refraction weight split by Schlick's approximation of
     /// Fresnel's equations: at an angle `θ` to the normal a share
     /// `F = R₀ + (1 − R₀)(1 − cos θ)⁵`, `R₀ = ((η − 1)/(η + 1))²`, of the weight goes to the
-    /// mirror ray and the rest, `1 − F`, through the surface (`cos θ` is the outside angle's,
-    /// on whichever side the ray comes from). Without refraction it changes nothing.
+    /// mirror ray and the rest, `1 − F`, through the surface (`θ` is the larger of the two
+    /// angles, the one on the side of the lower index). Without refraction it changes nothing.
     #[must_use]
     pub const fn with_fresnel(self) -> Self {
         let mut material = self;

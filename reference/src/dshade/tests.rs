@@ -259,3 +259,122 @@ fn a_miss_sees_the_gradient_along_the_ray() {
         Rgb::new(128, 0, 128)
     );
 }
+
+#[test]
+fn a_ball_seen_from_inside_is_dark_to_a_light_outside_it() {
+    // The same room with the light outside it: the room's own wall stands in between, shadows
+    // on or off.
+    let light = DLight::new(DVec3::new(0.0, 0.0, 5.0), 0.5);
+    let room = DObject::matte(ball([0.0; 3], 2.0).into(), Rgb::WHITE);
+    let mut s = scene(0.25, &[light], &[room]);
+    for shadows in [true, false] {
+        s.set_shadows(shadows);
+        // Towards −z the inner wall faces the light (n = +z): only the ambient 0.25 is left.
+        assert_eq!(
+            s.trace(&ray([0.0; 3], [0.0, 0.0, -1.0])).1,
+            Rgb::new(64, 64, 64)
+        );
+    }
+}
+
+/// A black ball of glass that lets all light through, bending it by `index`.
+fn glass(index: f64) -> DMaterial {
+    DMaterial {
+        diffuse: 0.0,
+        refract: Some(crate::DRefraction {
+            index,
+            weight: 1.0,
+            fresnel: false,
+        }),
+        ..DMaterial::matte(Rgb::BLACK)
+    }
+}
+
+/// A sky that is black straight down and white straight up: a ray's grey tells its `y`.
+fn grey_sky(objects: &[DObject]) -> DScene<4> {
+    let mut s = DScene::new(
+        0.0,
+        Background {
+            top: Rgb::WHITE,
+            bottom: Rgb::BLACK,
+        },
+    );
+    for object in objects {
+        s.push(*object).unwrap();
+    }
+    s
+}
+
+#[test]
+fn glass_of_index_1_is_invisible() {
+    let ball = DObject::new(ball([0.0, 0.0, -5.0], 1.0).into(), glass(1.0));
+    let s = grey_sky(&[ball]);
+    let empty = grey_sky(&[]);
+    for to in [[0.0, 0.0, -5.0], [0.3, 0.5, -5.0], [0.0, -0.9, -5.0]] {
+        let seen = s.radiance(&ray([0.0; 3], to), s.shoot(&ray([0.0; 3], to)).as_ref());
+        let through = empty.radiance(&ray([0.0; 3], to), None);
+        for (a, b) in seen.iter().zip(through) {
+            assert!((a - b).abs() < 1e-12, "{seen:?} for {through:?}");
+        }
+    }
+}
+
+#[test]
+fn snell_bends_by_the_ratio_of_sines_and_reflects_past_the_critical_angle() {
+    let n = DVec3::Z;
+    // 45° from air into glass of index 1.5: sin θ₂ = sin 45° / 1.5.
+    let d = DVec3::new(1.0, 0.0, -1.0).try_normalize().unwrap();
+    let bent = snell(d, n, 1.0 / 1.5).unwrap();
+    assert!((bent.x - libm::sqrt(0.5) / 1.5).abs() < 1e-15);
+    assert!((bent.length() - 1.0).abs() < 1e-15 && bent.z < 0.0);
+    // From inside glass at 45°: sin θ₂ = 1.06 > 1, all reflected; at 40° (below the critical
+    // 41.8°) it passes, at sin θ₂ = 1.5 · sin 40°.
+    assert_eq!(snell(d, n, 1.5), None);
+    let forty = 40f64.to_radians();
+    let d = DVec3::new(libm::sin(forty), 0.0, -libm::cos(forty));
+    let bent = snell(d, n, 1.5).unwrap();
+    assert!((bent.x - 1.5 * libm::sin(forty)).abs() < 1e-15);
+    // Straight on, nothing bends.
+    assert_eq!(snell(-DVec3::Z, n, 1.5), Some(-DVec3::Z));
+}
+
+#[test]
+fn a_ray_through_a_glass_ball_off_centre_comes_out_where_snell_sends_it() {
+    // A ray down −z at height h = 0.5 meets the unit ball at sin θ₁ = 0.5, bends to
+    // sin θ₂ = 0.5/1.5 inside and leaves turned by 2(θ₁ − θ₂) towards the axis.
+    let ball = DObject::new(ball([0.0, 0.0, -5.0], 1.0).into(), glass(1.5));
+    let s = grey_sky(&[ball]);
+    let r = ray([0.0, 0.5, 0.0], [0.0, 0.5, -5.0]);
+    let (t1, t2) = (libm::asin(0.5), libm::asin(0.5 / 1.5));
+    let turn = 2.0 * (t1 - t2);
+    // The leaving direction is (0, −sin turn, −cos turn): its y gives the sky's grey.
+    let y = -libm::sin(turn);
+    let want = (y + 1.0) / 2.0;
+    let seen = s.radiance(&r, s.shoot(&r).as_ref());
+    assert!((seen[0] - want).abs() < 1e-12, "{seen:?}, want {want}");
+}
+
+#[test]
+fn inside_glass_past_the_critical_angle_the_light_stays_in() {
+    // The eye at the centre of a glass ball of index 1.5 in a red room: every ray from the
+    // centre meets the wall head on and leaves, showing the room. From a point near the wall
+    // looking along it, rays meet the wall at a steep angle and are reflected until the
+    // depth runs out: with depth 0 the mirror ray sees the sky only.
+    let room = DObject::matte(ball([0.0; 3], 10.0).into(), RED);
+    let lens = DObject::new(ball([0.0, 0.0, -5.0], 1.0).into(), glass(1.5));
+    let mut s = scene(1.0, &[], &[room, lens]);
+    let centre = [0.0, 0.0, -5.0];
+    assert_eq!(s.trace(&ray(centre, [0.0, 1.0, -5.0])).1, RED);
+    s.set_depth(0);
+    // From (0, −0.9, −5) along +x: the wall is met at 64° from its normal, past 41.8°.
+    let r = ray([0.0, -0.9, -5.0], [1.0, -0.9, -5.0]);
+    assert_eq!(s.shoot(&r).map(|h| h.object), Some(1));
+    assert_eq!(s.trace(&r).1, SKY);
+}
+
+#[test]
+fn schlick_reflects_r0_head_on_and_everything_at_grazing() {
+    assert!((schlick(1.5, 1.0) - 0.04).abs() < 1e-15);
+    assert_eq!(schlick(1.5, 0.0), 1.0);
+    assert!(schlick(1.5, 0.5) > 0.04 && schlick(1.5, 0.5) < 0.1);
+}
