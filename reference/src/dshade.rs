@@ -49,7 +49,7 @@ impl<const N: usize, const L: usize, F: Real> DScene<N, L, F> {
             DShape::Sphere(_) => h.normal.dot(dir) > F::ZERO,
             DShape::Plane(_) => false,
         };
-        let mut sum = self.local(object, &h, n, dir, inside);
+        let mut sum = self.local(object, &h, n, dir);
         let material = &object.material;
         let mut reflect = material.reflect;
         if let Some(glass) = material.refract {
@@ -116,26 +116,10 @@ impl<const N: usize, const L: usize, F: Real> DScene<N, L, F> {
     /// summed over the lights in front of the surface (`n·l > 0`) and, with shadows on, not
     /// hidden by another object; `C` is the colour at the point (a checkerboard's square on a
     /// plane) and `h` the unit half vector of `l` and `−d`.
-    ///
-    /// `inside` says the hit is on the inner side of a sphere: the sphere's own surface then
-    /// stands between the point and every light outside it (glass stops shadow rays as any
-    /// object does), so only lights strictly inside the sphere count, with shadows on or off.
-    fn local(
-        &self,
-        object: &DObject<F>,
-        hit: &DHit<F>,
-        n: DVec3<F>,
-        d: DVec3<F>,
-        inside: bool,
-    ) -> DColour<F> {
+    fn local(&self, object: &DObject<F>, hit: &DHit<F>, n: DVec3<F>, d: DVec3<F>) -> DColour<F> {
         let material = &object.material;
         let (mut diffuse, mut specular) = (F::ZERO, F::ZERO);
         for light in self.lights() {
-            if let (true, DShape::Sphere(sphere)) = (inside, object.shape)
-                && !sphere.contains(light.position)
-            {
-                continue;
-            }
             let Some((l, distance)) = light.seen_from(hit.point) else {
                 continue;
             };

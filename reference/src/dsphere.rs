@@ -111,12 +111,6 @@ impl<F: Real> DSphere<F> {
             object: 0,
         }
     }
-
-    /// Whether `point` lies strictly inside the sphere.
-    #[must_use]
-    pub fn contains(&self, point: DVec3<F>) -> bool {
-        (point - self.centre).length_squared() < self.radius * self.radius
-    }
 }
 
 #[cfg(test)]

@@ -203,12 +203,6 @@ impl Sphere {
         hit.normal.dot_wide(hit.point - self.centre) < 0
     }
 
-    /// Whether `point` lies strictly inside the sphere, compared exactly at 64 bits.
-    pub(crate) fn contains(&self, point: Vec3) -> bool {
-        let r2 = fx::wide_mul(self.radius.to_bits(), self.radius.to_bits()).unsigned_abs();
-        (point - self.centre).length_squared_wide() < r2
-    }
-
     /// The crossing ahead of a ray whose near crossing `t_close − a` came out below
     /// [`SURELY_OUTSIDE`]: the origin is classified exactly as outside, on or inside the
     /// sphere (see [`Sphere::intersect`]).

@@ -5,9 +5,9 @@
 //! for one ray. `render_row` finds the same pixels for a whole row for less (see `accel`),
 //! bit for bit.
 
+use crate::geometry::Shape;
 use crate::geometry::ray::Ray;
 use crate::geometry::refract::{refract, schlick};
-use crate::geometry::{Shape, Sphere};
 use crate::numbers::fx::{self, Fx};
 use crate::numbers::vec3::Vec3;
 use crate::scene::hit::SceneHit;
@@ -76,13 +76,8 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         let Some((h, object)) = hit.and_then(|h| Some((h, self.objects().get(h.object)?))) else {
             return self.background().along(ray.dir);
         };
-        // A sphere seen from inside (the eye within it) is lit only from within, as below.
-        let leaving = match object.shape {
-            Shape::Sphere(sphere) if sphere.reached_from_inside(&h.hit) => Some(sphere),
-            _ => None,
-        };
         // The first surface has weight 1: its light is the sum so far, exactly.
-        let light = self.local(object, &h, ray.dir, leaving.as_ref());
+        let light = self.local(object, &h, ray.dir);
         if object.material.reflect == Fx::ZERO && object.material.refraction.is_none() {
             return light;
         }
@@ -112,15 +107,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
                 Start::Off(_) => None,
             };
             let exiting = self.exits(&h, within);
-            let leaving = match object.shape {
-                Shape::Sphere(sphere) if exiting => Some(sphere),
-                _ => None,
-            };
-            add(
-                &mut sum,
-                next.weight,
-                self.local(object, &h, next.ray.dir, leaving.as_ref()),
-            );
+            add(&mut sum, next.weight, self.local(object, &h, next.ray.dir));
             self.branch(
                 &mut sum,
                 &mut waiting,
@@ -274,23 +261,10 @@ impl<const N: usize, const L: usize> Scene<N, L> {
 
     /// The surface's own light at a hit: ambient and diffuse times its colour, plus white
     /// highlights, from every light whose shadow ray reaches it.
-    ///
-    /// `leaving` is the sphere when the hit is on its inside: a light outside it would have
-    /// to shine through its own surface, so only lights strictly inside it count, shadows on
-    /// or off (as a surface facing away from a light is never lit by it).
-    fn local(
-        &self,
-        object: &Object,
-        hit: &SceneHit,
-        dir: Vec3,
-        leaving: Option<&Sphere>,
-    ) -> Linear {
+    fn local(&self, object: &Object, hit: &SceneHit, dir: Vec3) -> Linear {
         let (material, normal) = (&object.material, hit.hit.normal);
         let (mut diffuse, mut specular) = (Fx::ZERO, Fx::ZERO);
         let mut light_up = |index: usize, light: &Light| {
-            if leaving.is_some_and(|sphere| !sphere.contains(light.position)) {
-                return;
-            }
             let to_light = light.position - hit.hit.point;
             let distance_squared = to_light.length_squared_wide();
             let Some(l) = to_light.normalize_with_square(distance_squared) else {

@@ -183,8 +183,8 @@ impl Material {
     /// it bends by `index` on leaving; where Snell's law has no solution there (total internal
     /// reflection) the weight goes to the mirror ray, which stays inside. A plane is a sheet
     /// with no thickness: light passes through it undeviated. Shadow rays are stopped by
-    /// transparent objects as by any other (tinyraytracer's choice), so a point on the inside
-    /// of a sphere is lit only by lights inside it; see
+    /// transparent objects as by any other (tinyraytracer's choice), and, as for any object, a
+    /// sphere does not shadow itself, on its inside either; see
     /// [`Scene::trace`](crate::Scene::trace) for the ray tree and its depth.
     ///
     /// ```

@@ -260,23 +260,6 @@ fn a_miss_sees_the_gradient_along_the_ray() {
     );
 }
 
-#[test]
-fn a_ball_seen_from_inside_is_dark_to_a_light_outside_it() {
-    // The same room with the light outside it: the room's own wall stands in between, shadows
-    // on or off.
-    let light = DLight::new(DVec3::new(0.0, 0.0, 5.0), 0.5);
-    let room = DObject::matte(ball([0.0; 3], 2.0).into(), Rgb::WHITE);
-    let mut s = scene(0.25, &[light], &[room]);
-    for shadows in [true, false] {
-        s.set_shadows(shadows);
-        // Towards −z the inner wall faces the light (n = +z): only the ambient 0.25 is left.
-        assert_eq!(
-            s.trace(&ray([0.0; 3], [0.0, 0.0, -1.0])).1,
-            Rgb::new(64, 64, 64)
-        );
-    }
-}
-
 /// A black ball of glass that lets all light through, bending it by `index`.
 fn glass(index: f64) -> DMaterial {
     DMaterial {
