@@ -243,10 +243,29 @@ fn material(src: &mut impl Source) -> Material {
         )
         .expect("weights drawn inside their documented ranges"),
     };
-    if src.one_in(4) {
+    let m = if src.one_in(4) {
         let size = src.pick(&[Fx::from_bits(1), Fx::from_num(0.5), Fx::from_num(2), LIMIT]);
         m.with_checker_fx(size, rgb(src))
             .expect("checker size drawn inside its documented range")
+    } else {
+        m
+    };
+    if src.one_in(4) {
+        // Glass: indices across the whole range, the ends too, and any weight up to 1.
+        let index = match src.below(4) {
+            0 => Fx::from_num(0.25),
+            1 => Fx::from_num(4),
+            _ => Fx::from_num(0.25 + src.uniform(3.75).abs()),
+        };
+        let through = weight(src, 1.0).max(Fx::from_bits(1));
+        let glass = m
+            .with_refraction_fx(index, through)
+            .expect("index and weight drawn inside their documented ranges");
+        if src.one_in(2) {
+            glass.with_fresnel()
+        } else {
+            glass
+        }
     } else {
         m
     }
@@ -1216,8 +1235,8 @@ pub fn check_supersampled<const N: usize>(
 /// (both exact, in Q32.32). The pixel with shadows on must then equal the pixel of the same
 /// scene lit only by the lights found unoccluded, with shadows off.
 ///
-/// Mirrors are left out: their bounces start from points the public API does not give (the
-/// mirror ray is private to the shading), so the same brute force cannot follow them.
+/// Mirrors and glass are left out: their secondary rays start from points the public API does
+/// not give (they are private to the shading), so the same brute force cannot follow them.
 pub fn check_shadows<const N: usize>(world: &World, camera: &Camera, row: u32) {
     if row >= camera.height() {
         return;
@@ -1231,7 +1250,8 @@ pub fn check_shadows<const N: usize>(world: &World, camera: &Camera, row: u32) {
         let Some(hit) = scene.shoot(&ray) else {
             continue;
         };
-        if scene.objects()[hit.object()].material.reflect() != Fx::ZERO {
+        let material = scene.objects()[hit.object()].material;
+        if material.reflect() != Fx::ZERO || material.refraction().is_some() {
             continue;
         }
         let mut mask = 0u32;
