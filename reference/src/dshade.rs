@@ -28,7 +28,9 @@ impl<const N: usize, const L: usize, F: Real> DScene<N, L, F> {
     ///
     /// The eye's ray is generation 0 and a ray sent from a hit of generation `g` is `g + 1`;
     /// a ray past [`depth`](Self::depth) sees only the background. So depth 0 still adds
-    /// `reflect ·` the background seen along the first mirror ray.
+    /// `reflect ·` the background seen along the first mirror ray. Every ray of the tree is
+    /// followed: fixray stops at `Scene::MAX_RAYS` secondary rays a pixel, which only trees
+    /// more than 5 generations deep can reach.
     ///
     /// A hit whose `object` is not in the scene counts as a miss.
     #[must_use]

@@ -65,7 +65,9 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// a ray of the next generation sees the background. The tree is followed without
     /// recursion, depth first, from a list of waiting rays that holds at most one ray per
     /// generation plus one, [`Scene::MAX_DEPTH`]` + 1` = 17 in all (about 700 bytes of
-    /// stack), so the stack a pixel needs does not grow with the depth.
+    /// stack), so the stack a pixel needs does not grow with the depth. A pixel traces at
+    /// most [`Scene::MAX_RAYS`] of them, first come first served in that order; the rest see
+    /// the background, so its time is bounded too.
     #[must_use]
     pub fn shade(&self, ray: &Ray, hit: Option<&SceneHit>) -> Rgb {
         crate::scene::linear::to_rgb(self.radiance(ray, hit.copied()))
@@ -92,7 +94,13 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         let mut waiting = Waiting::new();
         let exiting = self.exits(first, None);
         self.branch(&mut sum, &mut waiting, dir, first, exiting, Fx::ONE, 0);
+        let mut traced: u16 = 0;
         while let Some(next) = waiting.pop() {
+            if traced == Self::MAX_RAYS {
+                add(&mut sum, next.weight, self.background().along(next.ray.dir));
+                continue;
+            }
+            traced += 1;
             let hit = match next.start {
                 Start::Off(object) => self.shoot_from(&next.ray, Some(object)),
                 Start::Within(sphere) => self.shoot_within(&next.ray, sphere),
