@@ -186,3 +186,55 @@ fn refraction_is_checked() {
     // Fresnel weighting without refraction changes nothing.
     assert_eq!(m.with_fresnel(), m);
 }
+
+/// The eye at the centre of a glass ball (index 1, half mirrored, half let through) inside a
+/// grey mirrored room: every ray meets a surface head on, each glass hit sends two rays on
+/// and each wall hit one, so generation `g` has F(g+2) rays (Fibonacci) and the tree at
+/// depth `d` holds 2, 3, 5, 8, 13, 21, 34, … rays a generation: 52 up to depth 6, 86 up to 7.
+fn hall_of_mirrors(depth: u8) -> Scene<2> {
+    let glass = Material::new(Rgb::BLACK, 0.0, 0.0, 1, 0.5)
+        .unwrap()
+        .with_refraction(1.0, 0.5)
+        .unwrap();
+    let wall = Material::new(Rgb::new(200, 200, 200), 0.0, 0.0, 1, 0.6).unwrap();
+    let light = Light::new([0.0, 0.0, 0.0], 1.0).unwrap();
+    let mut scene = Scene::new(light, 0.2, Rgb::BLACK).unwrap();
+    let ball = Sphere::new([0.0; 3], 1.0).unwrap();
+    let room = Sphere::new([0.0; 3], 4.0).unwrap();
+    scene.add(Object::new(Shape::Sphere(ball), glass)).unwrap();
+    scene.add(Object::new(Shape::Sphere(room), wall)).unwrap();
+    scene.set_depth(depth);
+    scene
+}
+
+#[test]
+fn a_pixel_follows_every_ray_up_to_max_rays_and_no_more() {
+    let along = ray([0.0; 3], [0.3, -0.2, 1.0]);
+    let dray = fixray_reference::DRay::new(
+        fixray_reference::DVec3::ZERO,
+        fixray_reference::DVec3::new(0.3, -0.2, 1.0),
+    )
+    .unwrap();
+    let grey = |depth: u8| {
+        let scene = hall_of_mirrors(depth);
+        let twin: fixray_reference::DScene<2, 4> =
+            fixray_reference::DScene::from_scene(&scene).unwrap();
+        (scene.trace(&along).r, twin.trace(&dray).1.r)
+    };
+    // Up to depth 6 (52 rays) the whole tree is followed, as the reference follows it.
+    for depth in 0..=6 {
+        let (fixed, exact) = grey(depth);
+        assert!(
+            fixed.abs_diff(exact) <= 1,
+            "depth {depth}: {fixed} against {exact}"
+        );
+    }
+    // At depth 16 the tree would hold thousands of rays: past 64 they see the black sky, and
+    // the pixel is darker than the full tree's.
+    assert_eq!(Scene::<2>::MAX_RAYS, 64);
+    let (fixed, exact) = grey(16);
+    assert!(
+        fixed + 2 < exact,
+        "depth 16: {fixed} against the full tree's {exact}"
+    );
+}
