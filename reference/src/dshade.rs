@@ -41,17 +41,41 @@ impl<const N: usize, const L: usize, F: Real> DScene<N, L, F> {
     /// What a ray of `generation` going along `dir` sees at `hit`: steps 1 and 2 of
     /// [`radiance`](Self::radiance). Recursive: the depth of the recursion is the scene's
     /// depth plus one.
+    // Inlined, as `local` is, so that a matte pixel runs one function: this model in `f32` is
+    // the firmware's float baseline, and calls would count against it.
+    #[inline(always)]
     fn seen(&self, dir: DVec3<F>, hit: Option<DHit<F>>, generation: u8) -> DColour<F> {
         let Some((h, object)) = hit.and_then(|h| Some((h, self.objects().get(h.object)?))) else {
             return background(&self.background(), dir);
         };
         let n = facing(h.normal, dir);
+        let sum = self.local(object, &h, n, dir);
+        if object.material.reflect == F::ZERO && object.material.refract.is_none() {
+            return sum;
+        }
+        self.secondary(sum, dir, &h, n, generation)
+    }
+
+    /// The rest of [`seen`](Self::seen) at a mirror or glass surface: what its mirror ray and
+    /// its refracted ray add to `sum`, the surface's own light. Kept apart, and never inlined,
+    /// so that the recursion does not weigh on the matte surfaces most pixels show.
+    #[inline(never)]
+    fn secondary(
+        &self,
+        mut sum: DColour<F>,
+        dir: DVec3<F>,
+        h: &DHit<F>,
+        n: DVec3<F>,
+        generation: u8,
+    ) -> DColour<F> {
+        let Some(object) = self.objects().get(h.object) else {
+            return sum;
+        };
         // A sphere's normal points outward: a ray along it is leaving the sphere.
         let inside = match object.shape {
             DShape::Sphere(_) => h.normal.dot(dir) > F::ZERO,
             DShape::Plane(_) => false,
         };
-        let mut sum = self.local(object, &h, n, dir);
         let material = &object.material;
         let mut reflect = material.reflect;
         if let Some(glass) = material.refract {
@@ -118,6 +142,7 @@ impl<const N: usize, const L: usize, F: Real> DScene<N, L, F> {
     /// summed over the lights in front of the surface (`n·l > 0`) and, with shadows on, not
     /// hidden by another object; `C` is the colour at the point (a checkerboard's square on a
     /// plane) and `h` the unit half vector of `l` and `−d`.
+    #[inline(always)]
     fn local(&self, object: &DObject<F>, hit: &DHit<F>, n: DVec3<F>, d: DVec3<F>) -> DColour<F> {
         let material = &object.material;
         let (mut diffuse, mut specular) = (F::ZERO, F::ZERO);
