@@ -26,7 +26,7 @@ const USAGE: &str = "\
 usage: simulator [--scene demo|classic] [--png FILE] [--size WxH] [--color rgb565|rgb888|gray8|binary]
 
   --scene S     demo (default): matte spheres, one light; classic: tinyraytracer's scene with
-                three lights, highlights, shadows, mirrors and a checkerboard floor
+                three lights, highlights, shadows, mirrors, a glass ball and a checkerboard floor
   --png FILE    write the picture to FILE (default: out/simulator.png in the crate)
   --size WxH    display size in pixels, 1 to 4096 a side (default: 160x128)
   --color C     the display's colour format (default: rgb888); gray8 and binary are dithered

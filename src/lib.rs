@@ -56,12 +56,14 @@
 //!   that refuse it.
 //! - `geometry/`: the chapter's [`Ray`] (Eq. 4.1), [`Plane`] (Eq. 4.2) and [`Sphere`]
 //!   (section 4.4), pure intersection functions returning a [`Hit`], whose normal faces the
-//!   ray; [`Shape`] is either.
+//!   ray; [`Shape`] is either; `refract.rs`, Snell's law and Schlick's approximation.
 //! - `scene/`: the [`Scene`] that holds [`Object`]s (a shape and its [`Material`], perhaps a
 //!   [`Checker`]), [`Light`]s and a [`Background`], in [`Rgb`] colours; its nearest hit is a
-//!   [`SceneHit`], a [`Hit`] and the object it is on.
+//!   [`SceneHit`], a [`Hit`] and the object it is on. A material may mirror and, as glass,
+//!   refract ([`Refraction`]).
 //! - `render/`: the [`Camera`] makes a ray through each pixel centre; `trace.rs` is the
-//!   chapter's shoot and shade, read top to bottom ([`Scene::trace`] = `shade(shoot(ray))`);
+//!   chapter's shoot and shade, read top to bottom ([`Scene::trace`] = `shade(shoot(ray))`,
+//!   mirror and refracted rays followed as a tree from a bounded list, without recursion);
 //!   [`render_row`], [`render`], [`render_row_supersampled`], [`shoot_row`] and
 //!   [`shoot_row_skipping`] walk rows and frames into a [`Framebuffer`] or a row buffer
 //!   ([`FrameHash`] digests them); `accel/` holds every speed-up of that walk ([`RowRays`],

@@ -24,8 +24,8 @@
 //! - A ray through a black glass sphere in front of a black-to-white sky comes out where the
 //!   chain of refractions and total internal reflections worked out in f64 sends it, for
 //!   indices ¼ to 4 and eyes inside and outside the sphere: its grey is within ±1 plus the
-//!   most the f64 answer moves when the sphere is moved or resized by the hit points' error
-//!   bound, 2⁻¹⁶·(4 + 2·path + 20·r) (a bundle of rays through glass fans out, and the
+//!   most the f64 answer moves when the sphere is moved (along each axis and diagonal) or
+//!   resized by the hit points' error bound, 2⁻¹⁶·(4 + 2·path + 20·r) (a bundle of rays through glass fans out, and the
 //!   renderer's rounding is that of an exact render of a sphere that close). Hits that error
 //!   could turn from refraction to total internal reflection are not judged: within 0.05 plus
 //!   the normal's error (the bound over r) of grazing, or with |k| within 10⁻³ plus what that
@@ -350,12 +350,20 @@ proptest! {
         // How much the answer moves when the sphere moves by that bound: the renderer's
         // rounding is that of an exact render of a sphere this close.
         let mut spread: f64 = 0.0;
-        for (dc, dr) in [
-            (DVec3::new(shift, 0.0, 0.0), 0.0), (DVec3::new(-shift, 0.0, 0.0), 0.0),
-            (DVec3::new(0.0, shift, 0.0), 0.0), (DVec3::new(0.0, -shift, 0.0), 0.0),
-            (DVec3::new(0.0, 0.0, shift), 0.0), (DVec3::new(0.0, 0.0, -shift), 0.0),
-            (DVec3::ZERO, shift), (DVec3::ZERO, -shift),
-        ] {
+        // The 26 neighbours of the centre a step `shift` away along each axis, and the radius
+        // `shift` larger and smaller.
+        let steps = [-shift, 0.0, shift];
+        let mut moves = vec![(DVec3::ZERO, shift), (DVec3::ZERO, -shift)];
+        for x in steps {
+            for y in steps {
+                for z in steps {
+                    if (x, y, z) != (0.0, 0.0, 0.0) {
+                        moves.push((DVec3::new(x, y, z), 0.0));
+                    }
+                }
+            }
+        }
+        for (dc, dr) in moves {
             let moved = through_glass(o, u, c + dc, r + dr, e, depth, 0.0);
             prop_assume!(moved.is_some());
             spread = spread.max((moved.unwrap().y - want_y).abs());
