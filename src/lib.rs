@@ -112,8 +112,9 @@ pub use numbers::isqrt;
 #[doc(hidden)]
 pub use geometry::refract::refract;
 pub use render::{
-    Camera, LookAt, MAX_PIXELS, Orbit, Pinhole, RowRays, render, render_row,
-    render_row_supersampled, shoot_row, shoot_row_skipping,
+    Camera, Damage, LookAt, MAX_PIXELS, MAX_RECTANGLES, Orbit, Pinhole, RowRays, render,
+    render_changes, render_row, render_row_span, render_row_supersampled, shoot_row,
+    shoot_row_skipping,
 };
 pub use scene::{Background, Checker, Light, Material, Object, Refraction, Rgb, Scene, SceneHit};
 

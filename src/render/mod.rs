@@ -8,10 +8,12 @@
 
 pub(crate) mod accel;
 pub(crate) mod camera;
+pub(crate) mod changes;
 pub(crate) mod pick;
 pub(crate) mod rows;
 pub(crate) mod trace;
 
 pub use accel::row_rays::RowRays;
 pub use camera::{Camera, LookAt, MAX_PIXELS, Orbit, Pinhole};
+pub use changes::{Damage, MAX_RECTANGLES, render_changes, render_row_span};
 pub use rows::{render, render_row, render_row_supersampled, shoot_row, shoot_row_skipping};

@@ -1,0 +1,573 @@
+//! The damage of an edit (`Damage::between`) and the redraw of it (`render_changes`): a frame
+//! redrawn where the damage says is, bit for bit, the frame of the edited scene, and every
+//! pixel that changed lies in the damage.
+//!
+//! The property test draws random scenes (an infinite ground, bounded planes, several
+//! spheres, one to three lights, shadows on), random cameras and random sequences of edits.
+//! `FIXRAY_CHANGES_CASES` sets how many sequences of four steps (default 150; thousands in
+//! release: `FIXRAY_CHANGES_CASES=5000 cargo test --release --test changes`).
+
+mod common;
+
+use common::{Source, XorShift};
+use fixray::{
+    Background, Camera, Damage, Error, Framebuffer, Light, Material, Plane, Rgb, Scene, Shape,
+    Size, Sphere, demo, render, render_changes, render_row, render_row_span,
+};
+
+type World = Scene<8, 3>;
+
+fn rgb(src: &mut XorShift) -> Rgb {
+    let b = src.bits();
+    Rgb::new(b as u8, (b >> 8) as u8, (b >> 16) as u8)
+}
+
+/// A value in `[lo, hi]`.
+fn between(src: &mut XorShift, lo: f32, hi: f32) -> f32 {
+    lo + (src.uniform(1.0) + 1.0) / 2.0 * (hi - lo)
+}
+
+fn matte_or_shiny(src: &mut XorShift) -> Material {
+    if src.one_in(3) {
+        Material::new(
+            rgb(src),
+            between(src, 0.3, 1.0),
+            between(src, 0.0, 1.0),
+            20,
+            0.0,
+        )
+        .unwrap()
+    } else {
+        Material::matte(rgb(src))
+    }
+}
+
+fn ball(src: &mut XorShift) -> Sphere {
+    Sphere::new(
+        [
+            between(src, -8.0, 8.0),
+            between(src, -3.5, 4.0),
+            between(src, -26.0, -6.0),
+        ],
+        between(src, 0.3, 3.0),
+    )
+    .unwrap()
+}
+
+fn light(src: &mut XorShift) -> Light {
+    Light::new(
+        [
+            between(src, -20.0, 20.0),
+            // Now and then a light low enough for a sphere's shadow on the ground to stretch
+            // too far to bound.
+            if src.one_in(16) {
+                between(src, -2.0, 6.0)
+            } else {
+                between(src, 8.0, 30.0)
+            },
+            between(src, -30.0, 10.0),
+        ],
+        between(src, 0.3, 0.9),
+    )
+    .unwrap()
+}
+
+/// A random scene: an infinite ground (sometimes tilted), up to two bounded planes, two to
+/// five spheres, one to three lights.
+fn scene(src: &mut XorShift) -> World {
+    let background = if src.one_in(3) {
+        Background {
+            top: rgb(src),
+            bottom: rgb(src),
+        }
+    } else {
+        Background::plain(rgb(src))
+    };
+    let mut world = World::new(light(src), between(src, 0.05, 0.3), background).unwrap();
+    for _ in 0..src.below(3) {
+        world.add_light(light(src)).unwrap();
+    }
+    let tilt = if src.one_in(4) {
+        [between(src, -0.3, 0.3), 1.0, between(src, -0.3, 0.3)]
+    } else {
+        [0.0, 1.0, 0.0]
+    };
+    let ground = Plane::new([0.0, -4.0, 0.0], tilt).unwrap();
+    let ground_look = if src.one_in(2) {
+        Material::matte(rgb(src))
+            .with_checker(between(src, 0.5, 3.0), rgb(src))
+            .unwrap()
+    } else {
+        Material::matte(rgb(src))
+    };
+    world.add_plane(ground, ground_look).unwrap();
+    for _ in 0..src.below(3) {
+        let plane = match src.below(3) {
+            // A back wall facing the camera.
+            0 => Plane::new([0.0, 0.0, between(src, -32.0, -20.0)], [0.0, 0.0, 1.0])
+                .unwrap()
+                .bounded(
+                    [between(src, -15.0, -2.0), between(src, -4.0, 0.0)],
+                    [between(src, 2.0, 15.0), between(src, 2.0, 12.0)],
+                )
+                .unwrap(),
+            // A side wall.
+            1 => Plane::new([between(src, -14.0, 14.0), 0.0, 0.0], [1.0, 0.0, 0.0])
+                .unwrap()
+                .bounded(
+                    [between(src, -4.0, 0.0), between(src, -30.0, -18.0)],
+                    [between(src, 1.0, 8.0), between(src, -16.0, -6.0)],
+                )
+                .unwrap(),
+            // A raised platform.
+            _ => Plane::new([0.0, between(src, -3.5, -1.0), 0.0], [0.0, 1.0, 0.0])
+                .unwrap()
+                .bounded(
+                    [between(src, -10.0, 0.0), between(src, -26.0, -14.0)],
+                    [between(src, 0.5, 10.0), between(src, -13.0, -6.0)],
+                )
+                .unwrap(),
+        };
+        world.add_plane(plane, matte_or_shiny(src)).unwrap();
+    }
+    for _ in 0..2 + src.below(4) {
+        world.add_sphere(ball(src), matte_or_shiny(src)).unwrap();
+    }
+    world
+}
+
+fn camera(src: &mut XorShift, size: Size) -> Camera {
+    loop {
+        let eye = [
+            between(src, -7.0, 7.0),
+            between(src, -1.0, 7.0),
+            between(src, -2.0, 8.0),
+        ];
+        let target = [
+            between(src, -4.0, 4.0),
+            between(src, -4.0, 1.0),
+            between(src, -20.0, -10.0),
+        ];
+        if let Ok(camera) = Camera::look_at(eye, target)
+            .fov_degrees(between(src, 35.0, 85.0))
+            .size(size)
+            .build()
+        {
+            return camera;
+        }
+    }
+}
+
+/// The spheres of a scene, by index.
+fn spheres(world: &World) -> Vec<usize> {
+    (0..world.objects().len())
+        .filter(|&i| matches!(world.objects()[i].shape, Shape::Sphere(_)))
+        .collect()
+}
+
+/// One random edit, described for the report. Mostly the region's own cases (move, resize,
+/// recolour); now and then one that must fall back to the whole screen.
+fn edit(src: &mut XorShift, world: &mut World) -> String {
+    let balls = spheres(world);
+    let index = src.pick(&balls);
+    let Shape::Sphere(old) = world.objects()[index].shape else {
+        unreachable!()
+    };
+    let c = old.centre();
+    let [x, y, z] = [c.x.to_num::<f32>(), c.y.to_num(), c.z.to_num()];
+    let r: f32 = old.radius().to_num();
+    match src.below(20) {
+        0..=8 => {
+            let step = if src.one_in(5) { 6.0 } else { 0.6 };
+            let to = [
+                x + src.uniform(step),
+                (y + src.uniform(step)).clamp(-5.0, 8.0),
+                z + src.uniform(step),
+            ];
+            world
+                .set_shape(index, Sphere::new(to, r).unwrap().into())
+                .unwrap();
+            format!("move sphere {index} from {:?} to {to:?} (r {r})", [x, y, z])
+        }
+        9..=12 => {
+            let to = (r * between(src, 0.6, 1.5)).clamp(0.1, 5.0);
+            world
+                .set_shape(index, Sphere::new([x, y, z], to).unwrap().into())
+                .unwrap();
+            format!("resize sphere {index} at {:?} from {r} to {to}", [x, y, z])
+        }
+        13..=16 => {
+            world.set_material(index, matte_or_shiny(src)).unwrap();
+            format!("recolour sphere {index}")
+        }
+        17 => {
+            let to = light(src);
+            world.set_light(0, to).unwrap();
+            "move light 0".into()
+        }
+        18 => {
+            world
+                .set_material(index, Material::new(rgb(src), 0.5, 0.5, 30, 0.6).unwrap())
+                .unwrap();
+            format!("make sphere {index} a mirror")
+        }
+        _ => {
+            let to = [x + src.uniform(1.0), y, z + src.uniform(1.0)];
+            let material = matte_or_shiny(src);
+            world
+                .set_object(
+                    index,
+                    fixray::Object::new(Sphere::new(to, r).unwrap().into(), material),
+                )
+                .unwrap();
+            format!("move and recolour sphere {index} to {to:?}")
+        }
+    }
+}
+
+/// What the property test saw, for its report.
+#[derive(Default)]
+struct Tally {
+    edits: u64,
+    whole: u64,
+    empty: u64,
+    damaged: u64,
+    changed: u64,
+    screen: u64,
+    /// The fewest columns between a changed pixel and the end of its row's span.
+    edge: u32,
+}
+
+/// Renders `scene` into a new frame.
+fn frame<const W: usize, const H: usize>(scene: &World, camera: &Camera) -> Framebuffer<W, H> {
+    let mut frame = Framebuffer::new();
+    render(scene, camera, &mut frame).unwrap();
+    frame
+}
+
+/// Checks the contract for one edit: every changed pixel in the damage, and the redrawn frame
+/// equal to the fresh one. Returns the number of changed pixels.
+fn check_edit<const W: usize, const H: usize>(
+    before: &World,
+    after: &World,
+    camera: &Camera,
+    previous: &Framebuffer<W, H>,
+    what: &str,
+) -> (Framebuffer<W, H>, Damage, u32, u32) {
+    let damage = Damage::between(before, after, camera);
+    let full = frame::<W, H>(after, camera);
+    let mut changed = 0;
+    let mut edge = u32::MAX;
+    for y in 0..H {
+        for x in 0..W {
+            if previous.pixel(x, y) != full.pixel(x, y) {
+                changed += 1;
+                if let Some(span) = damage.row_span(y as u32).filter(|_| !damage.is_whole()) {
+                    let x = x as u32;
+                    // Columns between this pixel and the span's nearer end, off-screen ends
+                    // not counted (the screen's edge is not the region's).
+                    let left = if span.start > 0 {
+                        x.saturating_sub(span.start)
+                    } else {
+                        u32::MAX
+                    };
+                    let right = if span.end < W as u32 {
+                        (span.end - 1).saturating_sub(x)
+                    } else {
+                        u32::MAX
+                    };
+                    edge = edge.min(left).min(right);
+                }
+                let inside = damage
+                    .row_span(y as u32)
+                    .is_some_and(|span| span.contains(&(x as u32)));
+                assert!(
+                    inside,
+                    "{what}: pixel ({x}, {y}) changed from {:?} to {:?} outside the damage \
+                     {:?}\nbefore: {before:?}\nafter: {after:?}\ncamera: {camera:?}",
+                    previous.pixel(x, y),
+                    full.pixel(x, y),
+                    damage.rectangles().collect::<Vec<_>>(),
+                );
+            }
+        }
+    }
+    let mut partial = previous.clone();
+    render_changes(after, camera, &damage, &mut partial).unwrap();
+    assert!(
+        partial == full,
+        "{what}: the redrawn frame differs from a fresh render"
+    );
+    (full, damage, changed, edge)
+}
+
+fn sequence<const W: usize, const H: usize>(seed: u64, tally: &mut Tally) {
+    let mut src = XorShift::new(seed);
+    let mut world = scene(&mut src);
+    let camera = camera(&mut src, Size::new(W as u32, H as u32));
+    let mut previous = frame::<W, H>(&world, &camera);
+    for step in 0..4 {
+        let before = world.clone();
+        let mut what = format!("seed {seed} ({W}x{H}) step {step}:");
+        // A mirror shows everything: its step is the whole screen. Turned back to matte the
+        // next step, it lets the sequence go on testing the region.
+        for index in spheres(&world) {
+            if world.objects()[index].material.reflect() != 0 {
+                world.set_material(index, matte_or_shiny(&mut src)).unwrap();
+                what += &format!(" sphere {index} no longer a mirror;");
+            }
+        }
+        for _ in 0..1 + src.below(2) {
+            what += " ";
+            what += &edit(&mut src, &mut world);
+            what += ";";
+        }
+        let (full, damage, changed, edge) = check_edit(&before, &world, &camera, &previous, &what);
+        tally.edge = tally.edge.min(edge);
+        if damage.is_whole() && std::env::var("FIXRAY_CHANGES_WHOLE").is_ok() {
+            println!("whole: {what}");
+        }
+        tally.edits += 1;
+        tally.whole += damage.is_whole() as u64;
+        tally.empty += damage.is_empty() as u64;
+        tally.damaged += damage.pixel_count() as u64;
+        tally.changed += changed as u64;
+        tally.screen += (W * H) as u64;
+        previous = full;
+    }
+}
+
+#[test]
+fn a_redrawn_frame_is_the_edited_scenes_frame() {
+    let cases: u64 = std::env::var("FIXRAY_CHANGES_CASES")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(150);
+    let mut tally = Tally {
+        edge: u32::MAX,
+        ..Tally::default()
+    };
+    for seed in 0..cases {
+        match seed % 3 {
+            0 => sequence::<40, 30>(seed, &mut tally),
+            1 => sequence::<64, 48>(seed, &mut tally),
+            _ => sequence::<96, 64>(seed, &mut tally),
+        }
+    }
+    println!(
+        "{} edits: {} whole screen, {} empty; damage {:.1} % of the screens, changed {:.1} %; \
+         nearest a changed pixel came to a span's end: {} columns",
+        tally.edits,
+        tally.whole,
+        tally.empty,
+        100.0 * tally.damaged as f64 / tally.screen as f64,
+        100.0 * tally.changed as f64 / tally.screen as f64,
+        tally.edge,
+    );
+    // The fallbacks are rare edits: most damage must be smaller than the screen, or the
+    // test would prove little.
+    assert!(tally.whole * 3 < tally.edits, "too many whole screens");
+}
+
+#[test]
+fn equal_scenes_damage_nothing() {
+    let mut src = XorShift::new(7);
+    for _ in 0..20 {
+        let world = scene(&mut src);
+        let camera = camera(&mut src, Size::new(64, 48));
+        let damage = Damage::between(&world, &world.clone(), &camera);
+        assert!(damage.is_empty() && !damage.is_whole());
+        assert_eq!(damage.pixel_count(), 0);
+        assert_eq!(damage.rectangles().count(), 0);
+        assert_eq!(damage.row_span(10), None);
+    }
+}
+
+/// The demo's camera and scene with a small ball added on the ground.
+fn demo_with_ball(x: f32, z: f32) -> (Scene<8>, usize) {
+    let mut scene = demo::scene();
+    let ball = scene
+        .add_sphere(
+            Sphere::new([x, -3.0, z], 1.0).unwrap(),
+            Rgb::new(240, 200, 60),
+        )
+        .unwrap();
+    (scene, ball)
+}
+
+#[test]
+fn a_new_colour_damages_only_the_sphere() {
+    let camera = demo::camera(160, 128).unwrap();
+    let (before, ball) = demo_with_ball(-1.0, -9.0);
+    let mut after = before.clone();
+    after.set_material(ball, Rgb::new(20, 90, 250)).unwrap();
+    let damage = Damage::between(&before, &after, &camera);
+    let rectangles: Vec<_> = damage.rectangles().collect();
+    assert_eq!(rectangles.len(), 1, "{rectangles:?}");
+    // The pixels that see the ball, by the plain path.
+    let (mut left, mut top, mut right, mut bottom) = (u32::MAX, u32::MAX, 0, 0);
+    for y in 0..128 {
+        for x in 0..160 {
+            if after.shoot(&camera.ray(x, y)).map(|h| h.object()) == Some(ball) {
+                (left, top) = (left.min(x), top.min(y));
+                (right, bottom) = (right.max(x + 1), bottom.max(y + 1));
+            }
+        }
+    }
+    let r = rectangles[0];
+    let (l, t) = (r.top_left.x as u32, r.top_left.y as u32);
+    let (rr, b) = (l + r.size.width, t + r.size.height);
+    println!("sphere seen in {left}..{right} x {top}..{bottom}, damage {l}..{rr} x {t}..{b}");
+    assert!(l <= left && t <= top && rr >= right && b >= bottom);
+    // A few pixels of margin around the ball, no more.
+    assert!(left - l <= 6 && top - t <= 6 && rr - right <= 6 && b - bottom <= 6);
+}
+
+#[test]
+fn a_ball_rolling_across_the_demo_floor_damages_a_small_region() {
+    let camera = demo::camera(160, 128).unwrap();
+    let screen = 160 * 128;
+    let (mut scene, ball) = demo_with_ball(-6.0, -9.0);
+    let mut previous = Framebuffer::<160, 128>::new();
+    render(&scene, &camera, &mut previous).unwrap();
+    let (mut damaged, mut changed, mut steps) = (0u32, 0u32, 0u32);
+    let mut x = -6.0;
+    while x < 6.0 {
+        x += 0.25;
+        let before = scene.clone();
+        scene
+            .set_shape(ball, Sphere::new([x, -3.0, -9.0], 1.0).unwrap().into())
+            .unwrap();
+        let damage = Damage::between(&before, &scene, &camera);
+        let mut full = Framebuffer::<160, 128>::new();
+        render(&scene, &camera, &mut full).unwrap();
+        let mut here = 0;
+        for y in 0..128 {
+            for col in 0..160 {
+                if previous.pixel(col, y) != full.pixel(col, y) {
+                    here += 1;
+                    let span = damage.row_span(y as u32).unwrap_or(0..0);
+                    assert!(span.contains(&(col as u32)), "x = {x}: ({col}, {y}) missed");
+                }
+            }
+        }
+        render_changes(&scene, &camera, &damage, &mut previous).unwrap();
+        assert!(previous == full, "x = {x}: redraw differs");
+        assert!(!damage.is_whole());
+        assert!(
+            damage.pixel_count() * 5 < screen,
+            "x = {x}: {}",
+            damage.pixel_count()
+        );
+        assert!(damage.pixel_count() >= here);
+        damaged += damage.pixel_count();
+        changed += here;
+        steps += 1;
+    }
+    let (mean_damage, mean_changed) = (damaged / steps, changed / steps);
+    println!(
+        "radius-1 ball rolling over the demo floor, 160x128, {steps} steps of 0.25: \
+         {mean_damage} pixels redrawn a step ({:.1} % of the screen), {mean_changed} changed \
+         ({:.1} %), slack {} pixels",
+        100.0 * mean_damage as f64 / screen as f64,
+        100.0 * mean_changed as f64 / screen as f64,
+        mean_damage - mean_changed,
+    );
+    // Not vacuous: the region is bigger than what changed, and far smaller than the screen.
+    assert!(damaged > changed && changed > 0);
+    assert!(mean_damage * 10 < screen);
+}
+
+#[test]
+fn a_damage_that_misses_a_pixel_is_caught() {
+    // The oracle itself: redrawing too little (nothing) leaves the frame stale.
+    let camera = demo::camera(80, 64).unwrap();
+    let (before, ball) = demo_with_ball(0.0, -9.0);
+    let mut after = before.clone();
+    after
+        .set_shape(ball, Sphere::new([0.5, -3.0, -9.0], 1.0).unwrap().into())
+        .unwrap();
+    let mut stale = Framebuffer::<80, 64>::new();
+    render(&before, &camera, &mut stale).unwrap();
+    let mut full = Framebuffer::<80, 64>::new();
+    render(&after, &camera, &mut full).unwrap();
+    render_changes(&after, &camera, &Damage::none(&camera), &mut stale).unwrap();
+    assert!(stale != full);
+    // And the region is not the trivial answer: smaller than the screen, larger than what
+    // changed (its margins).
+    let damage = Damage::between(&before, &after, &camera);
+    let mut old = Framebuffer::<80, 64>::new();
+    render(&before, &camera, &mut old).unwrap();
+    let changed = (0..64)
+        .flat_map(|y| (0..80).map(move |x| (x, y)))
+        .filter(|&(x, y)| old.pixel(x, y) != full.pixel(x, y))
+        .count() as u32;
+    assert!(!damage.is_whole() && damage.pixel_count() > changed && changed > 0);
+}
+
+#[test]
+fn the_plain_path_is_the_rows_path() {
+    // render_changes traces pixels one by one: the crate's promise that this is render_row's
+    // picture, bit for bit, checked on the property test's scenes.
+    for seed in 0..40 {
+        let mut src = XorShift::new(1000 + seed);
+        let world = scene(&mut src);
+        let camera = camera(&mut src, Size::new(48, 36));
+        let mut row = [Rgb::BLACK; 48];
+        let mut span = [Rgb::BLACK; 48];
+        for y in 0..36 {
+            render_row(&world, &camera, y, &mut row).unwrap();
+            render_row_span(&world, &camera, y, 0..48, &mut span).unwrap();
+            for x in 0..48 {
+                assert_eq!(
+                    row[x as usize],
+                    world.trace(&camera.ray(x, y)),
+                    "seed {seed}"
+                );
+            }
+            assert_eq!(row, span, "seed {seed} row {y}");
+        }
+    }
+}
+
+#[test]
+fn bad_sizes_are_errors() {
+    let camera = demo::camera(32, 24).unwrap();
+    let scene = demo::scene();
+    let small = demo::camera(16, 12).unwrap();
+    let mut frame = Framebuffer::<32, 24>::new();
+    assert!(matches!(
+        render_changes(&scene, &camera, &Damage::whole(&small), &mut frame),
+        Err(Error::SizeMismatch { .. })
+    ));
+    let mut other = Framebuffer::<16, 16>::new();
+    assert!(matches!(
+        render_changes(&scene, &camera, &Damage::whole(&camera), &mut other),
+        Err(Error::SizeMismatch { .. })
+    ));
+    let mut out = [Rgb::BLACK; 4];
+    assert_eq!(
+        render_row_span(&scene, &camera, 24, 0..4, &mut out),
+        Err(Error::RowOutOfRange { row: 24, rows: 24 })
+    );
+    assert_eq!(
+        render_row_span(&scene, &camera, 0, 30..34, &mut out),
+        Err(Error::ColumnOutOfRange { col: 33, cols: 32 })
+    );
+    #[allow(clippy::reversed_empty_ranges)]
+    let backwards = 5..1;
+    assert_eq!(
+        render_row_span(&scene, &camera, 0, backwards, &mut out),
+        Err(Error::ColumnOutOfRange { col: 5, cols: 32 })
+    );
+    assert_eq!(
+        render_row_span(&scene, &camera, 0, 0..3, &mut out),
+        Err(Error::BufferLength { needed: 3, got: 4 })
+    );
+    // The whole screen: every row's span is the row.
+    let whole = Damage::whole(&camera);
+    assert_eq!(whole.row_span(0), Some(0..32));
+    assert_eq!(whole.row_span(24), None);
+    assert_eq!(whole.pixel_count(), 32 * 24);
+    assert_eq!(whole.rectangles().count(), 1);
+}
