@@ -12,10 +12,15 @@
 //! ```
 //!
 //! It prints one line per renderer and scene, named as the firmware names its row, e.g.
-//! `fixed-classic 0x........`; there are more lines than the table has rows.
+//! `fixed-classic 0x........`; there are more lines than the table has rows. Two more lines
+//! are the animation's (`firmware/src/animation.rs`): `animate-spans`, the digest of every
+//! span its partial redraws draw, and `animate-final`, its last frame.
 
 #[path = "../firmware/src/renderer.rs"]
 mod renderer;
+
+#[path = "../firmware/src/animation.rs"]
+mod animation;
 
 use fixray::{FrameHash, Rgb};
 use renderer::{COLS, Fixed, FixedRays, FixedShoot, ROWS, Reference, Renderer, Variant};
@@ -26,6 +31,10 @@ fn main() {
     print_hashes::<FixedShoot>();
     print_hashes::<Reference<f64>>();
     print_hashes::<Reference<f32>>();
+    // The animation's digests: every span its partial redraws draw, and its last frame.
+    let totals = animation::run(|| 0).expect("the animation's scenes are valid");
+    println!("animate-spans {:#010x}", totals.spans_hash);
+    println!("animate-final {:#010x}", totals.final_hash);
 }
 
 /// Prints `name hash` for every scene drawn by `R`.

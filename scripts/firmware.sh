@@ -13,6 +13,10 @@
 # (`_noshadow`), without mirrors (`_nomirror`) and with its glass opaque (`_opaque`) to show what
 # each costs.
 #
+# Then `animate`: the demo scene with a ball rolling across its floor, each frame redrawn only
+# where fixray's `Damage` says it can have changed and then in full, with the instructions of
+# each, and the hashes of what it drew checked against the host's.
+#
 # Usage: scripts/firmware.sh [--markdown]
 #
 # The chips, their QEMU machines and their names in tables are firmware/targets.tsv's lines;
@@ -227,9 +231,48 @@ for target in "${targets[@]}"; do
 done
 echo "stack = bytes below the draw's call (a picture's includes its own row buffer)."
 
+# The animation (firmware/src/bin/animate.rs, firmware/src/animation.rs): a ball rolling across
+# the demo floor, each frame redrawn only where `Damage` says it can have changed, then in
+# full. Its two hashes (every redrawn span; the last frame) are examples/frame_hash.rs's.
+echo
+arow() { printf '%-28s %-8s %14s %14s %7s %12s %7s %7s\n' "$@"; }
+arow target hash partial/frame full/frame ratio damage/frame px/frame ram
+declare -A anim_partial anim_full anim_damage anim_ram
+anim_pixels=""
+for target in "${targets[@]}"; do
+    log="$logs/$target-animate.txt"
+    status=0
+    (cd "$firmware" && cargo run --quiet --release --target "$target" \
+        --config "$(remap "$target")" --bin animate) \
+        >"$log" 2>&1 || status=$?
+    animate=$(line animate:)
+    memory=$(line memory:)
+    frames=$(field frames "$animate")
+    if ((status != 0)) || [[ -z $frames || -z $memory ]]; then
+        arow "$target" FAILED "exit $status" - - - - -
+        sed 's/^/    /' "$log" | tail -n 5 >&2
+        failed=1
+        continue
+    fi
+    verdict=MISMATCH
+    [[ $(field spans_hash "$animate") == "${host_hash[animate-spans]:-none}" &&
+        $(field final_hash "$animate") == "${host_hash[animate-final]:-none}" ]] && verdict=match
+    [[ $verdict == match ]] || failed=1
+    partial=$(($(field partial "$animate") / frames))
+    full=$(($(field full "$animate") / frames))
+    anim_partial[$target]=$partial
+    anim_full[$target]=$full
+    anim_damage[$target]=$(($(field damage "$animate") / frames))
+    anim_ram[$target]=$(($(field static_ram "$memory") + $(field peak_stack "$memory")))
+    anim_pixels=$(($(field pixels "$animate") / frames))
+    arow "$target" "$verdict" "$partial" "$full" "$(awk -v p="$partial" -v f="$full" 'BEGIN { printf "%.3f", p / f }')" \
+        "${anim_damage[$target]}" "$anim_pixels" "${anim_ram[$target]}"
+done
+echo "per frame, averaged over the animation's frames; ratio = partial / full; damage = finding the region."
+
 echo
 echo "host hashes (examples/frame_hash.rs, examples/draw_hash.rs):"
-for renderer in "${names[@]}" draw-demo draw-classic; do
+for renderer in "${names[@]}" draw-demo draw-classic animate-spans animate-final; do
     printf '  %-24s %s\n' "$renderer" "${host_hash[$renderer]:-none}"
 done
 echo "instruction counters (QEMU -icount shift=0), each checked by a loop of known length:"
@@ -308,6 +351,35 @@ tables() {
     for renderer in "${memory_rows[@]}"; do
         echo "| \`$renderer\` | $(per_chip flash_of "$renderer") | $(per_chip ram_of "$renderer") |"
     done
+    echo
+    local pixels=${anim_pixels:-0} all=$((160 * 128))
+    echo "Animation (\`firmware/src/bin/animate.rs\`): a ball of radius 1 rolling across the demo floor at 160 × 128, instructions a frame averaged over its frames, redrawing only the changed region (\`Damage\`) and the whole frame; the partial redraws send $(grouped $((2 * pixels))) bytes of Rgb565 a frame against $(grouped $((2 * all))), $(awk -v p="$pixels" -v a="$all" 'BEGIN { printf "%.1f", 100 * p / a }') %:"
+    echo
+    printf '| redraw |'
+    for target in "${targets[@]}"; do
+        printf ' %s |' "${chip_of[$target]}"
+    done
+    printf '\n|---|'
+    for target in "${targets[@]}"; do
+        printf -- '---:|'
+    done
+    echo
+    printf '| partial (finding the region included) |'
+    for target in "${targets[@]}"; do printf ' %s |' "$(grouped "${anim_partial[$target]:-}")"; done
+    echo
+    printf '| full |'
+    for target in "${targets[@]}"; do printf ' %s |' "$(grouped "${anim_full[$target]:-}")"; done
+    echo
+    printf '| partial / full |'
+    for target in "${targets[@]}"; do
+        local p=${anim_partial[$target]:-} f=${anim_full[$target]:-}
+        if [[ -n $p && -n $f ]]; then
+            printf ' %s %% |' "$(awk -v p="$p" -v f="$f" 'BEGIN { printf "%.1f", 100 * p / f }')"
+        else
+            printf ' — |'
+        fi
+    done
+    echo
 }
 mkdir -p "$firmware/target"
 tables >"$firmware/target/firmware-tables.md"

@@ -106,6 +106,37 @@ const fn demo_scene() -> Scene<8> {
     )
 }
 
+/// How many frames [`rolling`] has: the ball crosses the floor in this many steps.
+pub const ROLLING_FRAMES: u32 = 16;
+
+/// Frame `frame` of the demo scene's animation: a yellow ball of radius 1 rolls across the
+/// floor in front of the blue sphere, from x = −4 at frame 0 half a unit a frame (x = 3.5 at
+/// frame 15), resting on the ground at z = −9. Frames past the last show the last.
+///
+/// The ball is added after the demo's five objects, as object 5.
+///
+/// ```
+/// use fixray::demo;
+/// let (first, last) = (demo::rolling(0), demo::rolling(demo::ROLLING_FRAMES - 1));
+/// assert_eq!(first.objects().len(), demo::scene().objects().len() + 1);
+/// assert_ne!(first.objects()[5], last.objects()[5]);
+/// ```
+#[must_use]
+pub const fn rolling(frame: u32) -> Scene<8> {
+    let step = if frame < ROLLING_FRAMES {
+        frame as i32
+    } else {
+        ROLLING_FRAMES as i32 - 1
+    };
+    let ball = valid(Sphere::from_fx(point(-40 + 5 * step, -30, -90), Fx::ONE));
+    let mut scene = scene();
+    valid(scene.add(Object::new(
+        Shape::Sphere(ball),
+        Material::matte(Rgb::new(240, 200, 60)),
+    )));
+    scene
+}
+
 /// Screen height of the demo camera (world units), 2 units at distance √3: 60° vertically.
 pub const SCREEN_HEIGHT: f32 = 2.0;
 /// Screen distance of the demo camera: √3.

@@ -65,6 +65,44 @@ pub fn run<R: Renderer>(variant: Variant) -> ! {
     exit::with(exit::SUCCESS)
 }
 
+/// Runs the animation of [`crate::animation`], prints its report and ends the QEMU run:
+///
+/// ```text
+/// animate: frames=15 partial=... damage=... full=... pixels=... spans_hash=0x........ final_hash=0x........
+/// ```
+///
+/// `partial` and `full` are the instructions of all the partial and all the full redraws,
+/// `damage` the part of `partial` that finding the changed region took, `pixels` those the
+/// partial redraws drew. The peak stack is the whole run's.
+pub fn run_animation() -> ! {
+    println!(
+        "board={} target={} renderer=animate",
+        crate::MACHINE,
+        crate::TARGET
+    );
+    check_counter();
+    stack::paint();
+    let totals = crate::animation::run(counter::ticks).unwrap_or_else(|e| refused("a frame", e));
+    let peak = stack::peak();
+    println!(
+        "animate: frames={} partial={} damage={} full={} pixels={} spans_hash={:#010x} \
+         final_hash={:#010x}",
+        totals.frames,
+        counter::instructions(totals.partial_ticks),
+        counter::instructions(totals.damage_ticks),
+        counter::instructions(totals.full_ticks),
+        totals.partial_pixels,
+        totals.spans_hash,
+        totals.final_hash
+    );
+    let usage = memory::usage();
+    println!(
+        "memory: flash={} static_ram={} peak_stack={peak}",
+        usage.flash, usage.static_ram
+    );
+    exit::with(exit::SUCCESS)
+}
+
 /// Starts the counter and times the loop of known length; a counter that disagrees ends the
 /// run, since every figure after it would be wrong.
 fn check_counter() {

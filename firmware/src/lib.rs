@@ -12,6 +12,7 @@
 //! | `fixed_classic_noshadow`, `fixed_classic_nomirror`, `fixed_classic_opaque` | the classic scene without shadow rays, without mirrors, with its glass opaque (no refraction) |
 //! | `reference`, `reference_classic` | both scenes by the `f64` reference (soft-float everywhere) |
 //! | `reference_f32`, `reference_f32_classic` | both scenes by the reference in `f32` (the Cortex-M4F's FPU) |
+//! | `animate` | a ball rolling across the demo floor, each frame redrawn where it changed and in full ([`animation`]) |
 //! | `draw` | both scenes through `Viewport::render` and a `Picture` onto an `Rgb565` display: the drawing layer's stack |
 //!
 //! It prints over semihosting what `scripts/firmware.sh` turns into a table: the
@@ -61,6 +62,7 @@ compile_error!(
      or riscv32imc-unknown-none-elf only (pass --target)"
 );
 
+pub mod animation;
 pub mod calibrate;
 pub mod counter;
 pub mod exit;

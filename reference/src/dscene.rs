@@ -118,15 +118,25 @@ impl<const N: usize, const L: usize, F: Real> DScene<N, L, F> {
     /// Planes and spheres are convex, so a ray leaving one outward cannot meet it again;
     /// leaving it out replaces nudging the origin off the surface.
     pub(super) fn shoot_from(&self, ray: &DRay<F>, leaving: Option<usize>) -> Option<DHit<F>> {
+        self.nearest(|index, shape| {
+            if Some(index) == leaving {
+                None
+            } else {
+                shape.intersect(ray)
+            }
+        })
+    }
+
+    /// The hit with the smallest `t` among `hit(index, shape)` over the objects, its `object`
+    /// set to the index; on a tie the object added earlier wins.
+    fn nearest(&self, hit: impl Fn(usize, &DShape<F>) -> Option<DHit<F>>) -> Option<DHit<F>> {
         self.objects
             .iter()
             .enumerate()
-            .filter(|&(index, _)| Some(index) != leaving)
             .filter_map(|(index, object)| {
-                let hit = object.shape.intersect(ray)?;
                 Some(DHit {
                     object: index,
-                    ..hit
+                    ..hit(index, &object.shape)?
                 })
             })
             // `min_by` would keep the last of equals; the earlier object must win a tie.
@@ -141,24 +151,11 @@ impl<const N: usize, const L: usize, F: Real> DScene<N, L, F> {
     /// ray leaves it ([`DSphere::exit`](super::DSphere::exit)), every other object as usual.
     /// If `inside` is not a sphere it is skipped, as by [`shoot_from`](Self::shoot_from).
     pub(super) fn shoot_inside(&self, ray: &DRay<F>, inside: usize) -> Option<DHit<F>> {
-        self.objects
-            .iter()
-            .enumerate()
-            .filter_map(|(index, object)| {
-                let hit = match object.shape {
-                    DShape::Sphere(sphere) if index == inside => Some(sphere.exit(ray)),
-                    _ if index == inside => None,
-                    shape => shape.intersect(ray),
-                }?;
-                Some(DHit {
-                    object: index,
-                    ..hit
-                })
-            })
-            .fold(None, |nearest: Option<DHit<F>>, hit| match nearest {
-                Some(best) if best.t <= hit.t => Some(best),
-                _ => Some(hit),
-            })
+        self.nearest(|index, shape| match shape {
+            DShape::Sphere(sphere) if index == inside => Some(sphere.exit(ray)),
+            _ if index == inside => None,
+            shape => shape.intersect(ray),
+        })
     }
 
     /// The colour of the pixel whose ray is `ray` and whose first hit is `hit` (the result of

@@ -37,11 +37,27 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// larger than the hit point's rounding (which grows with distance) and would detach
     /// shadows from the objects that cast them.
     pub(crate) fn shoot_from(&self, ray: &Ray, leaving: Option<usize>) -> Option<SceneHit> {
-        // Hits lie within FAR, so any hit is nearer than MAX; on a tie the first object wins.
+        self.nearest(ray, |index, shape| {
+            if Some(index) == leaving {
+                None
+            } else {
+                shape.hit_distance(ray)
+            }
+        })
+    }
+
+    /// The nearest hit along `ray`, with `distance(index, shape)` the distance at which it
+    /// meets object `index`, if it does: on a tie the first object wins.
+    #[inline(always)]
+    fn nearest(
+        &self,
+        ray: &Ray,
+        distance: impl Fn(usize, &Shape) -> Option<Fx>,
+    ) -> Option<SceneHit> {
+        // Hits lie within FAR, so any hit is nearer than MAX.
         let (mut best, mut nearest) = (Fx::MAX, usize::MAX);
         for (index, object) in self.objects().iter().enumerate() {
-            if Some(index) != leaving
-                && let Some(t) = object.shape.hit_distance(ray)
+            if let Some(t) = distance(index, &object.shape)
                 && t < best
             {
                 (best, nearest) = (t, index);
@@ -248,22 +264,9 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// meets that sphere at the far crossing (see `Sphere::exit_distance`), the others as
     /// any ray does. On a tie the object added first wins.
     pub(crate) fn shoot_within(&self, ray: &Ray, within: usize) -> Option<SceneHit> {
-        let (mut best, mut nearest) = (Fx::MAX, usize::MAX);
-        for (index, object) in self.objects().iter().enumerate() {
-            let t = match object.shape {
-                Shape::Sphere(sphere) if index == within => Some(sphere.exit_distance(ray)),
-                shape => shape.hit_distance(ray),
-            };
-            if let Some(t) = t
-                && t < best
-            {
-                (best, nearest) = (t, index);
-            }
-        }
-        let hit = self.objects().get(nearest)?.shape.hit_at(ray, best);
-        Some(SceneHit {
-            hit,
-            object: nearest,
+        self.nearest(ray, |index, shape| match shape {
+            Shape::Sphere(sphere) if index == within => Some(sphere.exit_distance(ray)),
+            shape => shape.hit_distance(ray),
         })
     }
 
