@@ -21,7 +21,7 @@
 //!
 //! ```text
 //! cargo run --release --example simulator -- --frames 24 --size 160x128
-//! cargo run --release --example simulator -- --frames 24 --apng docs/animation.png
+//! cargo run --release --example simulator -- --frames 48 --apng docs/animation.png
 //! cargo run --release --example simulator -- --frames 12 --scene classic --png-dir out/classic
 //! ```
 //!
@@ -680,7 +680,7 @@ mod animation {
             );
             println!(
                 "median redraw {:.2} ms a frame ({:.0} frames/s) against a full render's {:.2} ms \
-                 ({:.0} frames/s): {:.1} times as fast; {} frames checked equal to a full render",
+                 ({:.0} frames/s): {:.1} times as fast; frames checked equal to a full render: {}",
                 redraw * 1e3,
                 1.0 / redraw,
                 full * 1e3,
@@ -691,7 +691,7 @@ mod animation {
         }
         let shown = std::path::absolute(dir).unwrap_or_else(|_| dir.to_path_buf());
         println!(
-            "wrote frame-000.png to frame-{:03}.png in {}",
+            "wrote {frames} PNG files, frame-000.png to frame-{:03}.png, in {}",
             frames - 1,
             shown.display()
         );
