@@ -108,15 +108,17 @@ const MAX_FPS: u32 = 60;
 /// Seconds the ball takes across the view and back.
 const CYCLE: f32 = 4.0;
 
-/// The ball at `t` of its cycle (0 to 1): across the view in front of the other spheres
-/// (z = −8, never meeting them) and back, bouncing four times on the floor (y = −4) on
-/// parabolas, as under gravity.
-fn ball_at(t: f32) -> Result<Sphere, fixray::Error> {
+/// The ball at `t` of its cycle (0 to 1): across the view and back, bouncing four times on
+/// the floor (y = −4) on parabolas, as under gravity. On the demo's endless floor it passes
+/// in front of the spheres (z = −8); the classic floor ends at z = −10, so there it passes
+/// behind them (z = −22), over the checkerboard. Neither path meets a sphere.
+fn ball_at(t: f32, classic: bool) -> Result<Sphere, fixray::Error> {
+    let (z, reach) = if classic { (-22.0, 6.0) } else { (-8.0, 4.5) };
     let across = 1.0 - (2.0 * t - 1.0).abs();
     let hop = (4.0 * t).fract();
-    let x = -4.5 + 9.0 * across;
+    let x = reach * (2.0 * across - 1.0);
     let y = -3.0 + 1.6 * 4.0 * hop * (1.0 - hop);
-    Sphere::new([x, y, -8.0], 1.0)
+    Sphere::new([x, y, z], 1.0)
 }
 
 /// The animation's counts since they were last reported.
@@ -311,7 +313,10 @@ fn run(options: &Options) -> Result<(), String> {
             animating = !animating;
             if animating && ball.is_none() {
                 let index = scene
-                    .add_sphere(ball_at(phase).map_err(|e| e.to_string())?, BALL)
+                    .add_sphere(
+                        ball_at(phase, options.classic).map_err(|e| e.to_string())?,
+                        BALL,
+                    )
                     .map_err(|e| e.to_string())?;
                 ball = Some(index);
                 camera = frame(&scene, orbit, options, &mut display)?;
@@ -331,7 +336,7 @@ fn run(options: &Options) -> Result<(), String> {
             scene
                 .set_shape(
                     index,
-                    Shape::Sphere(ball_at(phase).map_err(|e| e.to_string())?),
+                    Shape::Sphere(ball_at(phase, options.classic).map_err(|e| e.to_string())?),
                 )
                 .map_err(|e| e.to_string())?;
             let damage = Damage::between(&before, &scene, &camera);
