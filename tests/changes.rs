@@ -438,6 +438,13 @@ fn a_redrawn_frame_is_the_edited_scenes_frame() {
     // The fallbacks are rare edits: most damage must be smaller than the screen, or the
     // test would prove little.
     assert!(tally.whole * 3 < tally.edits, "too many whole screens");
+    // And the region is not so wide that it could never fail: some changed pixel lies within
+    // two columns of its span's end, so spans narrowed by three columns would miss it.
+    assert!(
+        tally.edge <= 2,
+        "no changed pixel near a span's end: {}",
+        tally.edge
+    );
 }
 
 #[test]

@@ -10,25 +10,36 @@
 //!   ambient term, the background, shadows on or off, the depth), in their number of
 //!   objects, or when an object of either scene mirrors or refracts (a mirror or glass can
 //!   show any other part of the scene); when a changed object is a plane or turns from one
-//!   shape into the other; and whenever one of the bounds below cannot be made (a point
-//!   behind or beside the eye, a shadow that reaches too far, a light inside a sphere).
+//!   shape into the other; and whenever one of the bounds below cannot be made: a changed
+//!   sphere reaching behind the plane of the eye (one wholly behind it is not seen at all),
+//!   or its shadow on an infinite plane stretching too far (a light inside the sphere, or
+//!   barely higher above the plane than the sphere's top) or reaching behind the eye.
 //! - **A sphere whose material alone changed**: its silhouette.
 //! - **A sphere that moved or changed size**: its silhouettes before and after, and the
 //!   shadows it casts before and after on every other object from every light. A pixel
 //!   outside both silhouettes meets the same object at the same point in both scenes, and
 //!   its colour can differ only where the sphere blocks a shadow ray in one scene and not the
 //!   other: where its hit point lies in the sphere's shadow. On a sphere that shadow is
-//!   bounded by the receiver's silhouette; on a plane by the projection, from the light, of
-//!   a box around the sphere (the central projection of a convex set lies in the hull of
-//!   its corners' projections), seen through the camera.
+//!   bounded by the receiver's silhouette (drawn whenever the two cones from the light, one
+//!   around each sphere, may meet); on a plane by the projection, from the light, of a box
+//!   around the sphere (the central projection of a convex set lies in the hull of its
+//!   corners' projections), seen through the camera, and by the plane's own rectangle when
+//!   it is bounded (which stands in alone where the shadow cannot be bounded).
+//! - **Several changed spheres**: the union of what each gives.
 //!
 //! Silhouettes are the renderer's own culling, the rows of
 //! [`Scene::seen_from_row`](crate::Scene::seen_from_row) and the columns of the camera's
 //! screen span of a sphere: a pixel outside them never tries the sphere in
-//! [`render_row`](crate::render_row). Shadows are bounded in `f32` once a frame, with the
-//! sphere widened by more than the rounding of a shadow ray and its test, and two pixels and
-//! more of margin on the screen, more than the half pixel by which a ray may miss its exact
-//! direction.
+//! [`render_row`](crate::render_row). Shadows are bounded in `f32` once a frame, from
+//! differences taken exactly in Q16.16: the sphere is widened by more than the rounding of a
+//! shadow ray and of its test (a margin that grows with the distance to the shadow), hit
+//! points are taken to lie within 2⁻¹⁰ of their surfaces, and the screen box gets two
+//! pixels of margin and more, against the half pixel by which a ray may miss its exact
+//! direction, the rounding of a hit point seen close up, and this `f32` arithmetic.
+//!
+//! The region is kept as at most [`MAX_RECTANGLES`] rectangles; when a ninth is needed, the
+//! two of the nine whose bounding box adds the fewest pixels become that box. A renderer redraws, on each row, the hull of
+//! the rectangles there ([`Damage::row_span`]): one window per row for a display driver.
 
 mod redraw;
 mod shadow;
@@ -141,8 +152,9 @@ impl Damage {
     /// - the whole screen when a light, the ambient term, the background, shadows on or off,
     ///   the depth or the number of objects differ; when an object of either scene mirrors
     ///   or refracts; when a changed object is a plane or changes shape kind; and when a
-    ///   bound cannot be made (a sphere reaching behind the eye, a light inside a moved
-    ///   sphere, a shadow on a plane that reaches too far or behind the eye);
+    ///   bound cannot be made (a changed sphere reaching behind the plane of the eye, its
+    ///   shadow on an infinite plane stretching too far, as from a light inside it or
+    ///   barely above it, or reaching behind the eye);
     /// - a sphere whose material alone changed: its silhouette;
     /// - a sphere that moved or changed size: its silhouettes before and after, and the
     ///   shadows it casts before and after from every light on every other object (a sphere
