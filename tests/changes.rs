@@ -239,7 +239,10 @@ struct Tally {
 }
 
 /// Renders `scene` into a new frame.
-fn frame<const W: usize, const H: usize>(scene: &World, camera: &Camera) -> Framebuffer<W, H> {
+fn frame<const W: usize, const H: usize, const N: usize, const L: usize>(
+    scene: &Scene<N, L>,
+    camera: &Camera,
+) -> Framebuffer<W, H> {
     let mut frame = Framebuffer::new();
     render(scene, camera, &mut frame).unwrap();
     frame
@@ -247,15 +250,15 @@ fn frame<const W: usize, const H: usize>(scene: &World, camera: &Camera) -> Fram
 
 /// Checks the contract for one edit: every changed pixel in the damage, and the redrawn frame
 /// equal to the fresh one. Returns the number of changed pixels.
-fn check_edit<const W: usize, const H: usize>(
-    before: &World,
-    after: &World,
+fn check_edit<const W: usize, const H: usize, const N: usize, const L: usize>(
+    before: &Scene<N, L>,
+    after: &Scene<N, L>,
     camera: &Camera,
     previous: &Framebuffer<W, H>,
     what: &str,
 ) -> (Framebuffer<W, H>, Damage, u32, u32) {
     let damage = Damage::between(before, after, camera);
-    let full = frame::<W, H>(after, camera);
+    let full = frame::<W, H, N, L>(after, camera);
     let mut changed = 0;
     let mut edge = u32::MAX;
     for y in 0..H {
@@ -376,7 +379,7 @@ fn sequence<const W: usize, const H: usize>(seed: u64, wild: bool, tally: &mut T
     } else {
         camera(&mut src, size)
     };
-    let mut previous = frame::<W, H>(&world, &camera);
+    let mut previous = frame::<W, H, 8, 3>(&world, &camera);
     for step in 0..4 {
         let before = world.clone();
         let mut what = format!("seed {seed} ({W}x{H}) step {step}:");
@@ -476,6 +479,49 @@ fn wild_scenes_redrawn_are_the_edited_scenes_frames() {
         100.0 * tally.changed as f64 / tally.screen as f64,
         tally.edge,
     );
+}
+
+#[test]
+fn spheres_past_the_64th_are_bounded_too() {
+    // Objects past the 64th have no culling bit: their silhouettes take every row.
+    let camera = demo::camera(64, 48).unwrap();
+    let light = Light::new([-20.0, 20.0, 20.0], 0.8).unwrap();
+    let mut world: Scene<72, 1> = Scene::new(light, 0.2, Rgb::new(50, 160, 200)).unwrap();
+    world
+        .add_plane(
+            Plane::new([0.0, -4.0, 0.0], [0.0, 1.0, 0.0]).unwrap(),
+            Rgb::new(120, 150, 90),
+        )
+        .unwrap();
+    for i in 0..70 {
+        let (x, z) = ((i % 10) as f32 * 2.0 - 9.0, -12.0 - (i / 10) as f32 * 2.0);
+        world
+            .add_sphere(
+                Sphere::new([x, -3.5, z], 0.4).unwrap(),
+                Rgb::new(200, 90, 40),
+            )
+            .unwrap();
+    }
+    let mut previous = frame::<64, 48, 72, 1>(&world, &camera);
+    for (index, to) in [
+        (3, [-4.0, -3.0, -12.5]),
+        (66, [1.5, -3.2, -23.0]),
+        (70, [0.0, -2.0, -14.0]),
+    ] {
+        let before = world.clone();
+        world
+            .set_shape(index, Sphere::new(to, 0.5).unwrap().into())
+            .unwrap();
+        let (full, damage, _, _) = check_edit(
+            &before,
+            &world,
+            &camera,
+            &previous,
+            &format!("move sphere {index}"),
+        );
+        assert!(!damage.is_whole(), "sphere {index}");
+        previous = full;
+    }
 }
 
 #[test]
