@@ -21,9 +21,9 @@
 //!   its colour can differ only where the sphere blocks a shadow ray in one scene and not the
 //!   other: where its hit point lies in the sphere's shadow. On a sphere that shadow is
 //!   bounded by the receiver's silhouette (drawn whenever the two cones from the light, one
-//!   around each sphere, may meet); on a plane by the projection, from the light, of a box
-//!   around the sphere (the central projection of a convex set lies in the hull of its
-//!   corners' projections), seen through the camera, and by the plane's own rectangle when
+//!   around each sphere, may meet); on a plane by the projection, from the light, of
+//!   octagonal prisms around the sphere (the central projection of a convex set lies in the
+//!   hull of its vertices' projections), seen through the camera, and by the plane's own rectangle when
 //!   it is bounded (which stands in alone where the shadow cannot be bounded).
 //! - **Several changed spheres**: the union of what each gives.
 //!

@@ -65,6 +65,22 @@ impl Damage {
 /// than a Q16.16 hit point's rounding (a few units of 2⁻¹⁶).
 const ON_SURFACE: f32 = 1.0 / 1024.0;
 
+/// A regular octagon's vertices on the unit circle, as (cos, sin) of the odd multiples of
+/// π/8. Scaled by [`OCTAGON`] its sides lie outside the unit circle, which it then holds.
+const OCTAGON_VERTICES: [(f32, f32); 8] = [
+    (0.923_879_5, 0.382_683_43),
+    (0.382_683_43, 0.923_879_5),
+    (-0.382_683_43, 0.923_879_5),
+    (-0.923_879_5, 0.382_683_43),
+    (-0.923_879_5, -0.382_683_43),
+    (-0.382_683_43, -0.923_879_5),
+    (0.382_683_43, -0.923_879_5),
+    (0.923_879_5, -0.382_683_43),
+];
+
+/// `1 / cos(π/8)`, rounded up: how far out an octagon around a unit circle has its vertices.
+const OCTAGON: f32 = 1.082_4;
+
 /// Nearer the eye than this (world units, along the view) no point is projected.
 const NEAREST: f32 = 1.0 / 16.0;
 
@@ -143,12 +159,13 @@ impl Caster {
     ///
     /// A shadowed hit point `P` lies within [`ON_SURFACE`] of the plane (a slab), and its
     /// segment to the light meets the widened sphere at some `Q`, which lies between the
-    /// slab's bottom and the light's height: `Q` is in the box around the sphere cut to those
-    /// heights. Along the ray from the light through `Q`, `P` lies between `Q` (or where the
-    /// ray enters the slab, if `Q` is above it) and where it leaves the slab. Central
-    /// projection from the light keeps convex hulls, so `P` lies in the hull of the cut
-    /// box's corners, each taken into the slab's faces so; and so does its pixel, in the
-    /// screen box of those points, all of them ahead of the eye.
+    /// slab's bottom and the light's height: `Q` is in the sphere cut to those heights, and in
+    /// two octagonal prisms around it (the part in the slab and the part above). Along the
+    /// ray from the light through `Q`, `P` lies between `Q` (or where the ray enters the
+    /// slab, if `Q` is above it) and where it leaves the slab. Central projection from the
+    /// light keeps convex hulls, so `P` lies in the hull of the prisms' vertices, each taken
+    /// into the slab's faces so; and so does its pixel, in the screen box of those points,
+    /// all of them ahead of the eye.
     fn on_plane(&self, plane: &Plane, map: &ScreenMap, damage: &Damage) -> Option<Option<Area>> {
         let normal = f3(plane.normal());
         // Heights above the plane, on the light's side.
@@ -179,20 +196,25 @@ impl Caster {
             if !exceeds(light_height * (63.0 / 64.0), high) {
                 return None;
             }
-            let mut points = [[0.0f32; 3]; 32];
+            let mut points = [[0.0f32; 3]; 64];
             let mut count = 0;
-            // The cut box in two: below the slab's top, a corner is a point of the slab
+            // The cut sphere in two: below the slab's top, a vertex is a point of the slab
             // itself; above, its ray enters the slab at the top face.
             let top = ON_SURFACE.clamp(low, high);
             for (from, to, above) in [(low, top, false), (top, high, true)] {
                 if from > to {
                     continue;
                 }
+                // The widest cross-section of the sphere between those heights, and the
+                // octagon around it: the prism on it holds that part of the sphere.
+                let off = (centre_height - centre_height.clamp(from, to)).abs();
+                let round = libm::sqrtf((half * half - off * off).max(0.0)) * 1.001;
+                let reach = round * OCTAGON;
                 for height in [from, to] {
-                    for (a, b) in [(-1.0, -1.0), (-1.0, 1.0), (1.0, -1.0), (1.0, 1.0)] {
+                    for (a, b) in OCTAGON_VERTICES {
                         let corner = add(
                             add(self.centre, scale(up, height - centre_height)),
-                            add(scale(across, a * half), scale(along, b * half)),
+                            add(scale(across, a * reach), scale(along, b * reach)),
                         );
                         // The ray from the light through the corner is at height h at the
                         // fraction (light − h) / (light − corner) of the way along, past 1.
