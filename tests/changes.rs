@@ -574,8 +574,8 @@ fn a_new_colour_damages_only_the_sphere() {
     let (rr, b) = (l + r.size.width, t + r.size.height);
     println!("sphere seen in {left}..{right} x {top}..{bottom}, damage {l}..{rr} x {t}..{b}");
     assert!(l <= left && t <= top && rr >= right && b >= bottom);
-    // A few pixels of margin around the ball, no more.
-    assert!(left - l <= 6 && top - t <= 6 && rr - right <= 6 && b - bottom <= 6);
+    // The margin around the ball: two pixels (and a rounding), no more.
+    assert!(left - l <= 3 && top - t <= 3 && rr - right <= 3 && b - bottom <= 3);
 }
 
 #[test]

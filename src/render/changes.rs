@@ -54,14 +54,14 @@ use embedded_graphics::primitives::Rectangle;
 use crate::geometry::shape::Shape;
 use crate::geometry::sphere::Sphere;
 use crate::render::camera::Camera;
-use crate::render::camera::project::{ScreenMap, f3};
+use crate::render::camera::project::{ScreenMap, add, cross, dot, exceeds, f3, length, scale, sub};
 use crate::scene::Scene;
 
 /// At most this many rectangles make a [`Damage`]; more are merged into bounding boxes.
 pub const MAX_RECTANGLES: usize = 8;
 
-/// A rectangle of whole pixels within the screen: columns `left..right`, rows `top..bottom`,
-/// never empty.
+/// A rectangle of whole pixels within the screen: columns `left..right`, rows `top..bottom`;
+/// never empty, but for [`Area::EMPTY`], which fills the places a [`Damage`] does not use.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 struct Area {
     left: u16,
@@ -113,7 +113,8 @@ impl Area {
 /// whole screen. Made by [`Damage::between`]; redrawn by [`render_changes`].
 ///
 /// Up to [`MAX_RECTANGLES`] rectangles are kept; when another is needed, the two whose
-/// bounding box adds the fewest pixels are merged into it. The storage is inside the value.
+/// bounding box adds the fewest pixels to their union are merged into it. The storage is
+/// inside the value.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Damage {
     areas: [Area; MAX_RECTANGLES],
@@ -291,6 +292,10 @@ impl Damage {
             }
         }
         self.count = kept;
+        // Unused places hold the empty area, so that equal regions compare equal.
+        for slot in self.areas.iter_mut().skip(kept) {
+            *slot = Area::EMPTY;
+        }
         if let Some(slot) = self.areas.get_mut(self.count) {
             *slot = area;
             self.count += 1;
@@ -301,7 +306,10 @@ impl Damage {
         let (mut best, mut pair) = (u32::MAX, (0, MAX_RECTANGLES));
         for i in 0..all.len() {
             for j in i + 1..all.len() {
-                let grown = all[i].hull(&all[j]).pixels() - all[i].pixels().min(all[j].pixels());
+                // The box less the union of the two: below 2 · 4096², exact in u32.
+                let (a, b) = (&all[i], &all[j]);
+                let overlap = a.meet(b).map_or(0, |m| m.pixels());
+                let grown = (a.hull(b).pixels() + overlap) - (a.pixels() + b.pixels());
                 if grown < best {
                     (best, pair) = (grown, (i, j));
                 }
@@ -450,21 +458,167 @@ impl Damage {
             let (first, end) = camera.column_span(ball.centre(), ball.radius())?;
             let clip = |c: i16| c.clamp(0, camera.cols() as i16) as u16;
             let (left, right) = (clip(first), clip(end.saturating_add(1)));
-            if left < right {
-                self.add(Area {
-                    left,
-                    top,
-                    right,
-                    bottom: last + 1,
-                });
+            if left >= right {
+                continue;
+            }
+            let culled = Area {
+                left,
+                top,
+                right,
+                bottom: last + 1,
+            };
+            // Both bounds hold every pixel that sees the sphere: so does their overlap.
+            let area = match outline(&ball, camera, map, self) {
+                Some(Some(outline)) => outline.meet(&culled),
+                Some(None) => None,
+                None => Some(culled),
+            };
+            if let Some(area) = area {
+                self.add(area);
             }
         }
         Some(())
     }
 }
 
+/// The pixels that may see `ball`, from its outline through `map` (tighter than the
+/// culling's bounds, which take the sphere's depth range whole): inner `None` if it misses
+/// the screen, `None` if no outline can be drawn (the sphere reaches the plane of the eye,
+/// or holds the lines through the eye along the screen's axes).
+///
+/// The columns are bounded by the two planes through the eye along the camera's `down` step
+/// that touch the sphere (every direction in such a plane has one column position), the
+/// rows likewise along `right`: each is found in the plane across that axis, as the
+/// tangents from the eye to the sphere's circle there, and placed on the screen by a point
+/// where it touches the sphere. The sphere is widened by 2⁻⁸, far more than the rounding
+/// of a primary ray's test; the margins of [`shadow::screen_area`] do the rest.
+fn outline(
+    ball: &Sphere,
+    camera: &Camera,
+    map: &ScreenMap,
+    damage: &Damage,
+) -> Option<Option<Area>> {
+    let centre = f3(ball.centre() - camera.eye());
+    let radius = ball.radius().to_num::<f32>() + 1.0 / 256.0;
+    if !exceeds(map.depth(centre) - radius, shadow::NEAREST) {
+        return None;
+    }
+    let (right, down) = camera.steps();
+    let mut touches = [[0.0f32; 3]; 4];
+    for (pair, axis) in touches.chunks_exact_mut(2).zip([f3(down), f3(right)]) {
+        let axis = scale(axis, 1.0 / length(axis));
+        let along = dot(centre, axis);
+        let across = sub(centre, scale(axis, along));
+        let apart = length(across);
+        if !exceeds(apart, radius * 1.001) {
+            return None;
+        }
+        // In the plane across the axis: the tangents from the eye meet the circle at the
+        // angle asin(r / apart) either side of the centre, cos(angle) · apart away.
+        let towards = scale(across, 1.0 / apart);
+        let side = cross(axis, towards);
+        let sin = radius / apart;
+        let cos = libm::sqrtf(1.0 - sin * sin);
+        for (touch, sign) in pair.iter_mut().zip([1.0f32, -1.0]) {
+            let tangent = add(scale(towards, cos), scale(side, sign * sin));
+            *touch = add(scale(tangent, cos * apart), scale(axis, along));
+        }
+    }
+    shadow::screen_area(touches.into_iter(), map, damage)
+}
+
 /// Whether every point of `ball` lies behind the eye, so no ray of the screen meets it.
 fn behind_eye(ball: &Sphere, camera: &Camera, map: &ScreenMap) -> bool {
     let depth = map.depth(f3(ball.centre() - camera.eye()));
     depth + ball.radius().to_num::<f32>() < -1.0 / 16.0
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn camera() -> Camera {
+        Camera::pinhole(2.0, 2.0, 1.0)
+            .size(Size::new(100, 60))
+            .build()
+            .unwrap()
+    }
+
+    fn square(x: u16, y: u16) -> Area {
+        Area {
+            left: x,
+            top: y,
+            right: x + 5,
+            bottom: y + 5,
+        }
+    }
+
+    #[test]
+    fn a_ninth_rectangle_merges_the_pair_that_grows_least() {
+        let mut damage = Damage::none(&camera());
+        // Nine squares along a row, the last two closest together.
+        for x in [0, 11, 22, 33, 44, 55, 66, 77, 83] {
+            damage.add(square(x, 0));
+        }
+        assert_eq!(damage.areas().len(), MAX_RECTANGLES);
+        for x in [0, 11, 22, 33, 44, 55, 66, 77, 83] {
+            assert!(damage.areas().iter().any(|a| a.contains(&square(x, 0))));
+        }
+        assert!(damage.areas().contains(&Area {
+            left: 77,
+            top: 0,
+            right: 88,
+            bottom: 5
+        }));
+        // A covered area adds nothing; one covering others replaces them.
+        let before = damage;
+        damage.add(square(78, 0));
+        assert_eq!(damage, before);
+        damage.add(Area {
+            left: 0,
+            top: 0,
+            right: 30,
+            bottom: 10,
+        });
+        assert_eq!(damage.areas().len(), 6);
+    }
+
+    #[test]
+    fn a_row_span_is_the_hull_of_the_rectangles_on_it() {
+        let mut damage = Damage::none(&camera());
+        damage.add(square(10, 10));
+        damage.add(square(40, 12));
+        assert_eq!(damage.row_span(9), None);
+        assert_eq!(damage.row_span(10), Some(10..15));
+        assert_eq!(damage.row_span(13), Some(10..45));
+        assert_eq!(damage.row_span(16), Some(40..45));
+        assert_eq!(damage.row_span(60), None);
+        assert_eq!(damage.pixel_count(), 2 * 5 + 3 * 35 + 2 * 5);
+        let rectangles = damage.rectangles().count();
+        assert_eq!(rectangles, 2);
+    }
+
+    #[test]
+    fn screen_boxes_become_pixels_whose_centres_lie_within_the_margin() {
+        let damage = Damage::none(&camera());
+        // Centres x + ½ within [10.2 − 1, 20.7 + 1]: columns 9 to 21.
+        let area = damage.area_of([10.2, 5.0], [20.7, 6.0], 1.0);
+        assert_eq!(
+            area,
+            Some(Some(Area {
+                left: 9,
+                top: 4,
+                right: 22,
+                bottom: 7
+            }))
+        );
+        // Off the screen, clipped; not finite, refused.
+        assert_eq!(
+            damage.area_of([-50.0, -9.0], [-20.0, -5.0], 2.0),
+            Some(None)
+        );
+        let far = damage.area_of([-1e30, 0.0], [1e30, 1.0], 2.0);
+        assert_eq!(far.flatten().map(|a| (a.left, a.right)), Some((0, 100)));
+        assert_eq!(damage.area_of([f32::NAN, 0.0], [1.0, 1.0], 2.0), None);
+    }
 }

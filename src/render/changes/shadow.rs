@@ -82,7 +82,7 @@ const OCTAGON_VERTICES: [(f32, f32); 8] = [
 const OCTAGON: f32 = 1.082_4;
 
 /// Nearer the eye than this (world units, along the view) no point is projected.
-const NEAREST: f32 = 1.0 / 16.0;
+pub(super) const NEAREST: f32 = 1.0 / 16.0;
 
 /// A sphere casting shadows from a point light. Positions are offsets from the light,
 /// differences taken exactly in Q16.16 and then converted, so that `f32` never subtracts
@@ -253,7 +253,7 @@ impl Caster {
 /// The pixels that may show points `from_eye` (offsets from the eye) and anything in their
 /// convex hull, or `None` if one lies less than [`NEAREST`] ahead of the eye. Empty (inner
 /// `None`) when the box misses the screen.
-fn screen_area(
+pub(super) fn screen_area(
     from_eye: impl Iterator<Item = F3>,
     map: &ScreenMap,
     damage: &Damage,
