@@ -9,12 +9,13 @@
 //! - **The whole screen** when the scenes differ in anything but their objects (a light, the
 //!   ambient term, the background, shadows on or off, the depth), in their number of
 //!   objects, or when an object of either scene mirrors or refracts (a mirror or glass can
-//!   show any other part of the scene); when a changed object is a plane or turns from one
-//!   shape into the other; and whenever one of the bounds below cannot be made: a changed
+//!   show any other part of the scene); when a changed plane moved or turned, an infinite
+//!   one's material changed, or an object turned from one shape into the other; and whenever one of the bounds below cannot be made: a changed
 //!   sphere reaching behind the plane of the eye (one wholly behind it is not seen at all),
 //!   or its shadow on an infinite plane stretching too far (a light inside the sphere, or
 //!   barely higher above the plane than the sphere's top) or reaching behind the eye.
-//! - **A sphere whose material alone changed**: its silhouette.
+//! - **A sphere whose material alone changed**: its silhouette. **A bounded plane whose
+//!   material alone changed**: its rectangle (an infinite one: the whole screen).
 //! - **A sphere that moved or changed size**: its silhouettes before and after, and the
 //!   shadows it casts before and after on every other object from every light. A pixel
 //!   outside both silhouettes meets the same object at the same point in both scenes, and
@@ -152,11 +153,13 @@ impl Damage {
     /// - nothing when the scenes are equal;
     /// - the whole screen when a light, the ambient term, the background, shadows on or off,
     ///   the depth or the number of objects differ; when an object of either scene mirrors
-    ///   or refracts; when a changed object is a plane or changes shape kind; and when a
+    ///   or refracts; when a plane moved or turned, an infinite plane's material changed or
+    ///   an object changed shape kind; and when a
     ///   bound cannot be made (a changed sphere reaching behind the plane of the eye, its
     ///   shadow on an infinite plane stretching too far, as from a light inside it or
     ///   barely above it, or reaching behind the eye);
-    /// - a sphere whose material alone changed: its silhouette;
+    /// - a sphere whose material alone changed: its silhouette; a bounded plane whose
+    ///   material alone changed: its rectangle;
     /// - a sphere that moved or changed size: its silhouettes before and after, and the
     ///   shadows it casts before and after from every light on every other object (a sphere
     ///   that may receive them: its silhouette; a plane: the screen bound of the shadow on
@@ -394,8 +397,17 @@ impl Damage {
             else {
                 return None;
             };
-            let (Shape::Sphere(old_ball), Shape::Sphere(new_ball)) = (old.shape, new.shape) else {
-                return None;
+            let (old_ball, new_ball) = match (old.shape, new.shape) {
+                (Shape::Sphere(old_ball), Shape::Sphere(new_ball)) => (old_ball, new_ball),
+                // A plane's new material shows only where the plane is seen, and casts the
+                // same shadows: within its rectangle, if it has one.
+                (Shape::Plane(old_plane), Shape::Plane(new_plane)) if old_plane == new_plane => {
+                    if let Some(area) = shadow::plane_area(&new_plane, camera.eye(), &map, self)? {
+                        self.add(area);
+                    }
+                    continue;
+                }
+                _ => return None,
             };
             *outline_before.get_mut(index)? = true;
             *outline_after.get_mut(index)? = true;

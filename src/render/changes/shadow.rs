@@ -1,5 +1,6 @@
 //! The shadows a moved sphere casts, before and after, bounded on the screen: on a sphere by
-//! its silhouette, on a plane by the projection of a box around the caster from the light.
+//! its silhouette, on a plane by the projection from the light of octagonal prisms around
+//! the caster, and by the plane's own rectangle when it is bounded.
 
 use super::{Area, Damage};
 use crate::geometry::plane::Plane;
@@ -284,7 +285,12 @@ pub(super) fn screen_area(
 
 /// The pixels that may see `plane`, if it is bounded and its rectangle lies ahead of the
 /// eye: inner `None` when none can; `None` when it is unbounded or not wholly ahead.
-fn plane_area(plane: &Plane, eye: Vec3, map: &ScreenMap, damage: &Damage) -> Option<Option<Area>> {
+pub(super) fn plane_area(
+    plane: &Plane,
+    eye: Vec3,
+    map: &ScreenMap,
+    damage: &Damage,
+) -> Option<Option<Area>> {
     let [min, max] = plane.bounds()?;
     let normal = plane.normal();
     let (nx, ny, nz) = (normal.x.abs(), normal.y.abs(), normal.z.abs());
