@@ -539,6 +539,109 @@ fn spheres_past_the_64th_are_bounded_too() {
     }
 }
 
+/// `material` without its mirror and its glass.
+fn opaque(material: Material) -> Material {
+    let m = Material::from_fx(
+        material.colour(),
+        material.diffuse(),
+        material.specular(),
+        material.shininess(),
+        fixray::Fx::ZERO,
+    )
+    .unwrap();
+    match material.checker() {
+        Some(checker) => m.with_checker_fx(checker.size(), checker.other()).unwrap(),
+        None => m,
+    }
+}
+
+#[test]
+fn hostile_worlds_keep_the_contract() {
+    // The hostile tests' worlds (huge and tiny spheres, planes at any angle, mirrors, eyes
+    // on surfaces), edited by swapping in objects of another such world or nudging a sphere.
+    let cases: u64 = std::env::var("FIXRAY_CHANGES_CASES")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(150u64)
+        .div_ceil(2);
+    let (mut edits, mut whole) = (0, 0);
+    for seed in 0..cases {
+        let mut src = XorShift::new(1 << 50 | seed);
+        let eye = [src.uniform(30.0), src.uniform(30.0), src.uniform(30.0)];
+        let target = [src.uniform(30.0), src.uniform(30.0), src.uniform(30.0)];
+        let Ok(camera) = Camera::look_at(eye, target)
+            .fov_degrees(between(&mut src, 10.0, 120.0))
+            .size(Size::new(48, 36))
+            .build()
+        else {
+            continue;
+        };
+        let view = common::View {
+            eye: camera.eye(),
+            forward: camera.ray(24, 18).dir(),
+        };
+        let count = 1 + src.below(8) as usize;
+        let Some(mut scene) = common::world(&mut src, view, count, false).build::<8>() else {
+            continue;
+        };
+        // Mirrors and glass make every edit the whole screen: most worlds go without.
+        let plain = !src.one_in(8);
+        if plain {
+            for index in 0..scene.objects().len() {
+                let object = scene.objects()[index];
+                scene
+                    .set_object(
+                        index,
+                        fixray::Object::new(object.shape, opaque(object.material)),
+                    )
+                    .unwrap();
+            }
+        }
+        let mut previous = frame::<48, 36, 8, 4>(&scene, &camera);
+        for step in 0..3 {
+            let before = scene.clone();
+            let index = src.below(scene.objects().len() as u64) as usize;
+            let what = match scene.objects()[index].shape {
+                Shape::Sphere(ball) if !src.one_in(3) => {
+                    let c = ball.centre();
+                    let nudge = |v: fixray::Fx, s: &mut XorShift| {
+                        (v.to_num::<f32>() + s.uniform(2.0)).clamp(-1024.0, 1024.0)
+                    };
+                    let to = [
+                        nudge(c.x, &mut src),
+                        nudge(c.y, &mut src),
+                        nudge(c.z, &mut src),
+                    ];
+                    let radius = ball.radius().to_num::<f32>();
+                    scene
+                        .set_shape(index, Sphere::new(to, radius).unwrap().into())
+                        .unwrap();
+                    format!("nudge sphere {index} to {to:?}")
+                }
+                _ => {
+                    let other = common::world(&mut src, view, count, false);
+                    let Some(&object) = other.objects.get(index) else {
+                        continue;
+                    };
+                    let object = if plain {
+                        fixray::Object::new(object.shape, opaque(object.material))
+                    } else {
+                        object
+                    };
+                    scene.set_object(index, object).unwrap();
+                    format!("swap object {index} for {object:?}")
+                }
+            };
+            let what = format!("hostile seed {seed} step {step}: {what}");
+            let (full, damage, _, _) = check_edit(&before, &scene, &camera, &previous, &what);
+            edits += 1;
+            whole += damage.is_whole() as u32;
+            previous = full;
+        }
+    }
+    println!("hostile: {edits} edits, {whole} whole screen");
+}
+
 #[test]
 fn equal_scenes_damage_nothing() {
     let mut src = XorShift::new(7);
