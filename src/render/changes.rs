@@ -434,7 +434,8 @@ impl Damage {
     }
 
     /// Adds the silhouettes of the spheres of `scene` marked in `marked`: the columns of
-    /// the camera's span of each, by the rows whose culling keeps it.
+    /// the camera's span of each by the rows whose culling keeps it (what `render_row`
+    /// tries it on), met with its outline. `O(rows · objects)`: one culling a row.
     fn silhouettes<const N: usize, const L: usize>(
         &mut self,
         scene: &Scene<N, L>,
