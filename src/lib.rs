@@ -69,6 +69,8 @@
 //!   ([`FrameHash`] digests them); `accel/` holds every speed-up of that walk ([`RowRays`],
 //!   row culling, runs of columns; and the shadow cones the scene keeps), each bit-identical to tracing the row's
 //!   pixels one by one.
+//!   `changes.rs` bounds the pixels an edit of the scene can change ([`Damage`]) and
+//!   redraws only those ([`render_changes`], [`render_row_span`]), for animations.
 //! - [`draw`]: onto any `embedded-graphics` display at a point, clipped to it: a
 //!   [`Viewport`] drawn as one [`Picture`] (an embedded-graphics `Drawable`) or band by band,
 //!   in every embedded-graphics colour type ([`FromRgb`]), Bayer-dithered where a channel has

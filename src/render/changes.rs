@@ -9,49 +9,60 @@
 //! - **The whole screen** when the scenes differ in anything but their objects (a light, the
 //!   ambient term, the background, shadows on or off, the depth), in their number of
 //!   objects, or when an object of either scene mirrors or refracts (a mirror or glass can
-//!   show any other part of the scene); when a changed object is a plane or turns from one
-//!   shape into the other; and whenever one of the bounds below cannot be made (a point
-//!   behind or beside the eye, a shadow that reaches too far, a light inside a sphere).
-//! - **A sphere whose material alone changed**: its silhouette.
+//!   show any other part of the scene); when a changed plane moved or turned, an infinite
+//!   one's material changed, or an object turned from one shape into the other; and whenever one of the bounds below cannot be made: a changed
+//!   sphere reaching behind the plane of the eye (one wholly behind it is not seen at all),
+//!   or its shadow on an infinite plane stretching too far (a light inside the sphere, or
+//!   barely higher above the plane than the sphere's top) or reaching behind the eye.
+//! - **A sphere whose material alone changed**: its silhouette. **A bounded plane whose
+//!   material alone changed**: its rectangle (an infinite one: the whole screen).
 //! - **A sphere that moved or changed size**: its silhouettes before and after, and the
 //!   shadows it casts before and after on every other object from every light. A pixel
 //!   outside both silhouettes meets the same object at the same point in both scenes, and
 //!   its colour can differ only where the sphere blocks a shadow ray in one scene and not the
 //!   other: where its hit point lies in the sphere's shadow. On a sphere that shadow is
-//!   bounded by the receiver's silhouette; on a plane by the projection, from the light, of
-//!   a box around the sphere (the central projection of a convex set lies in the hull of
-//!   its corners' projections), seen through the camera.
+//!   bounded by the receiver's silhouette (drawn whenever the two cones from the light, one
+//!   around each sphere, may meet); on a plane by the projection, from the light, of
+//!   octagonal prisms around the sphere (the central projection of a convex set lies in the
+//!   hull of its vertices' projections), seen through the camera, and by the plane's own rectangle when
+//!   it is bounded (which stands in alone where the shadow cannot be bounded).
+//! - **Several changed spheres**: the union of what each gives.
 //!
 //! Silhouettes are the renderer's own culling, the rows of
 //! [`Scene::seen_from_row`](crate::Scene::seen_from_row) and the columns of the camera's
 //! screen span of a sphere: a pixel outside them never tries the sphere in
-//! [`render_row`](crate::render_row). Shadows are bounded in `f32` once a frame, with the
-//! sphere widened by more than the rounding of a shadow ray and its test, and two pixels and
-//! more of margin on the screen, more than the half pixel by which a ray may miss its exact
-//! direction.
+//! [`render_row`](crate::render_row). Shadows are bounded in `f32` once a frame, from
+//! differences taken exactly in Q16.16: the sphere is widened by more than the rounding of a
+//! shadow ray and of its test (a margin that grows with the distance to the shadow), hit
+//! points are taken to lie within 2⁻¹⁰ of their surfaces, and the screen box gets two
+//! pixels of margin and more, against the half pixel by which a ray may miss its exact
+//! direction, the rounding of a hit point seen close up, and this `f32` arithmetic.
+//!
+//! The region is kept as at most [`MAX_RECTANGLES`] rectangles; when a ninth is needed, the
+//! two of the nine whose bounding box adds the fewest pixels become that box. A renderer redraws, on each row, the hull of
+//! the rectangles there ([`Damage::row_span`]): one window per row for a display driver.
+
+mod redraw;
+mod shadow;
+
+pub use redraw::{render_changes, render_row_span};
 
 use core::ops::Range;
 
 use embedded_graphics::geometry::{Point, Size};
 use embedded_graphics::primitives::Rectangle;
 
-use crate::error::Error;
-use crate::framebuffer::Framebuffer;
-use crate::geometry::plane::Plane;
 use crate::geometry::shape::Shape;
 use crate::geometry::sphere::Sphere;
-use crate::numbers::vec3::Vec3;
 use crate::render::camera::Camera;
-use crate::render::camera::project::{F3, ScreenMap, cross, dot, exceeds, f3};
+use crate::render::camera::project::{ScreenMap, add, cross, dot, exceeds, f3, length, scale, sub};
 use crate::scene::Scene;
-use crate::scene::colour::Rgb;
-use crate::scene::light::Light;
 
 /// At most this many rectangles make a [`Damage`]; more are merged into bounding boxes.
 pub const MAX_RECTANGLES: usize = 8;
 
-/// A rectangle of whole pixels within the screen: columns `left..right`, rows `top..bottom`,
-/// never empty.
+/// A rectangle of whole pixels within the screen: columns `left..right`, rows `top..bottom`;
+/// never empty, but for [`Area::EMPTY`], which fills the places a [`Damage`] does not use.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 struct Area {
     left: u16,
@@ -103,7 +114,8 @@ impl Area {
 /// whole screen. Made by [`Damage::between`]; redrawn by [`render_changes`].
 ///
 /// Up to [`MAX_RECTANGLES`] rectangles are kept; when another is needed, the two whose
-/// bounding box adds the fewest pixels are merged into it. The storage is inside the value.
+/// bounding box adds the fewest pixels to their union are merged into it. The storage is
+/// inside the value.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Damage {
     areas: [Area; MAX_RECTANGLES],
@@ -141,10 +153,13 @@ impl Damage {
     /// - nothing when the scenes are equal;
     /// - the whole screen when a light, the ambient term, the background, shadows on or off,
     ///   the depth or the number of objects differ; when an object of either scene mirrors
-    ///   or refracts; when a changed object is a plane or changes shape kind; and when a
-    ///   bound cannot be made (a sphere reaching behind the eye, a light inside a moved
-    ///   sphere, a shadow on a plane that reaches too far or behind the eye);
-    /// - a sphere whose material alone changed: its silhouette;
+    ///   or refracts; when a plane moved or turned, an infinite plane's material changed or
+    ///   an object changed shape kind; and when a
+    ///   bound cannot be made (a changed sphere reaching behind the plane of the eye, its
+    ///   shadow on an infinite plane stretching too far, as from a light inside it or
+    ///   barely above it, or reaching behind the eye);
+    /// - a sphere whose material alone changed: its silhouette; a bounded plane whose
+    ///   material alone changed: its rectangle;
     /// - a sphere that moved or changed size: its silhouettes before and after, and the
     ///   shadows it casts before and after from every light on every other object (a sphere
     ///   that may receive them: its silhouette; a plane: the screen bound of the shadow on
@@ -226,19 +241,15 @@ impl Damage {
     /// The rectangles, within the screen, as embedded-graphics draws them (the whole screen
     /// as one when [`Damage::is_whole`]). They may overlap.
     pub fn rectangles(&self) -> impl Iterator<Item = Rectangle> + '_ {
-        let whole = Area {
+        let whole = self.whole.then_some(Area {
             left: 0,
             top: 0,
             right: self.cols,
             bottom: self.rows,
-        };
-        let areas: &[Area] = if self.whole {
-            core::slice::from_ref(&self.areas[0])
-        } else {
-            self.areas()
-        };
-        areas.iter().map(move |area| {
-            let area = if self.whole { &whole } else { area };
+        });
+        // When whole, the kept areas (none) are not listed, the screen is.
+        let kept = if self.whole { &[][..] } else { self.areas() };
+        whole.into_iter().chain(kept.iter().copied()).map(|area| {
             Rectangle::new(
                 Point::new(i32::from(area.left), i32::from(area.top)),
                 Size::new(
@@ -284,6 +295,10 @@ impl Damage {
             }
         }
         self.count = kept;
+        // Unused places hold the empty area, so that equal regions compare equal.
+        for slot in self.areas.iter_mut().skip(kept) {
+            *slot = Area::EMPTY;
+        }
         if let Some(slot) = self.areas.get_mut(self.count) {
             *slot = area;
             self.count += 1;
@@ -294,7 +309,10 @@ impl Damage {
         let (mut best, mut pair) = (u32::MAX, (0, MAX_RECTANGLES));
         for i in 0..all.len() {
             for j in i + 1..all.len() {
-                let grown = all[i].hull(&all[j]).pixels() - all[i].pixels().min(all[j].pixels());
+                // The box less the union of the two: below 2 · 4096², exact in u32.
+                let (a, b) = (&all[i], &all[j]);
+                let overlap = a.meet(b).map_or(0, |m| m.pixels());
+                let grown = (a.hull(b).pixels() + overlap) - (a.pixels() + b.pixels());
                 if grown < best {
                     (best, pair) = (grown, (i, j));
                 }
@@ -379,8 +397,17 @@ impl Damage {
             else {
                 return None;
             };
-            let (Shape::Sphere(old_ball), Shape::Sphere(new_ball)) = (old.shape, new.shape) else {
-                return None;
+            let (old_ball, new_ball) = match (old.shape, new.shape) {
+                (Shape::Sphere(old_ball), Shape::Sphere(new_ball)) => (old_ball, new_ball),
+                // A plane's new material shows only where the plane is seen, and casts the
+                // same shadows: within its rectangle, if it has one.
+                (Shape::Plane(old_plane), Shape::Plane(new_plane)) if old_plane == new_plane => {
+                    if let Some(area) = shadow::plane_area(&new_plane, camera.eye(), &map, self)? {
+                        self.add(area);
+                    }
+                    continue;
+                }
+                _ => return None,
             };
             *outline_before.get_mut(index)? = true;
             *outline_after.get_mut(index)? = true;
@@ -407,7 +434,8 @@ impl Damage {
     }
 
     /// Adds the silhouettes of the spheres of `scene` marked in `marked`: the columns of
-    /// the camera's span of each, by the rows whose culling keeps it.
+    /// the camera's span of each by the rows whose culling keeps it (what `render_row`
+    /// tries it on), met with its outline. `O(rows · objects)`: one culling a row.
     fn silhouettes<const N: usize, const L: usize>(
         &mut self,
         scene: &Scene<N, L>,
@@ -443,158 +471,73 @@ impl Damage {
             let (first, end) = camera.column_span(ball.centre(), ball.radius())?;
             let clip = |c: i16| c.clamp(0, camera.cols() as i16) as u16;
             let (left, right) = (clip(first), clip(end.saturating_add(1)));
-            if left < right {
-                self.add(Area {
-                    left,
-                    top,
-                    right,
-                    bottom: last + 1,
-                });
-            }
-        }
-        Some(())
-    }
-
-    /// Adds the shadows `ball` (object `index` of `scene`, or what it was) casts from `light`
-    /// on the other objects that did not change: a sphere that may receive it is marked in
-    /// `outlines` for its silhouette; a plane's shadow is bounded here.
-    #[allow(clippy::too_many_arguments)]
-    fn shadows<const N: usize, const L: usize>(
-        &mut self,
-        scene: &Scene<N, L>,
-        index: usize,
-        ball: &Sphere,
-        light: &Light,
-        camera: &Camera,
-        map: &ScreenMap,
-        changed: &impl Fn(usize) -> bool,
-        outlines: &mut [bool; N],
-    ) -> Option<()> {
-        let caster = Caster::new(ball, light.position(), camera.eye());
-        for (other, object) in scene.objects().iter().enumerate() {
-            if other == index || changed(other) {
-                // A changed object's pixels are in its own silhouettes already.
+            if left >= right {
                 continue;
             }
-            match object.shape {
-                Shape::Sphere(receiver) => {
-                    if caster.may_shade(&receiver) {
-                        *outlines.get_mut(other)? = true;
-                    }
-                }
-                Shape::Plane(plane) => {
-                    let shadow = caster.on_plane(&plane, map, self);
-                    let within = plane_area(&plane, camera.eye(), map, self);
-                    let area = match (shadow, within) {
-                        (Some(None), _) => None,
-                        (Some(Some(shadow)), Some(within)) => within.and_then(|w| w.meet(&shadow)),
-                        (Some(Some(shadow)), None) => Some(shadow),
-                        (None, Some(within)) => within,
-                        (None, None) => return None,
-                    };
-                    if let Some(area) = area {
-                        self.add(area);
-                    }
-                }
+            let culled = Area {
+                left,
+                top,
+                right,
+                bottom: last + 1,
+            };
+            // Both bounds hold every pixel that sees the sphere: so does their overlap.
+            let area = match outline(&ball, camera, map, self) {
+                Some(Some(outline)) => outline.meet(&culled),
+                Some(None) => None,
+                None => Some(culled),
+            };
+            if let Some(area) = area {
+                self.add(area);
             }
         }
         Some(())
     }
 }
 
-/// Renders columns `cols` of display row `row` into `out`, one colour per column: the
-/// pixels [`render_row`](crate::render_row) gives them, bit for bit, for a display that is
-/// sent only the part of a row that changed ([`Damage::row_span`]).
+/// The pixels that may see `ball`, from its outline through `map` (tighter than the
+/// culling's bounds, which take the sphere's depth range whole): inner `None` if it misses
+/// the screen, `None` if no outline can be drawn (the sphere reaches the plane of the eye,
+/// or holds the lines through the eye along the screen's axes).
 ///
-/// Each pixel is traced on its own ([`Camera::ray`], [`Scene::shoot_among`] with the row's
-/// culling, [`Scene::shade`]). A row off the screen is [`Error::RowOutOfRange`], columns
-/// past its right edge (or a range that ends before it starts) [`Error::ColumnOutOfRange`],
-/// and a buffer that is not `cols.len()` long [`Error::BufferLength`].
-///
-/// ```
-/// use fixray::{demo, render_row, render_row_span, Rgb};
-/// let (scene, camera) = (demo::scene(), demo::camera(32, 24)?);
-/// let mut row = [Rgb::BLACK; 32];
-/// render_row(&scene, &camera, 20, &mut row)?;
-/// let mut part = [Rgb::BLACK; 8];
-/// render_row_span(&scene, &camera, 20, 10..18, &mut part)?;
-/// assert_eq!(part, row[10..18]);
-/// assert!(render_row_span(&scene, &camera, 20, 30..33, &mut [Rgb::BLACK; 3]).is_err());
-/// # Ok::<(), fixray::Error>(())
-/// ```
-pub fn render_row_span<const N: usize, const L: usize>(
-    scene: &Scene<N, L>,
+/// The columns are bounded by the two planes through the eye along the camera's `down` step
+/// that touch the sphere (every direction in such a plane has one column position), the
+/// rows likewise along `right`: each is found in the plane across that axis, as the
+/// tangents from the eye to the sphere's circle there, and placed on the screen by a point
+/// where it touches the sphere. The sphere is widened by 2⁻⁸, far more than the rounding
+/// of a primary ray's test; the margins of [`shadow::screen_area`] do the rest.
+fn outline(
+    ball: &Sphere,
     camera: &Camera,
-    row: u32,
-    cols: Range<u32>,
-    out: &mut [Rgb],
-) -> Result<(), Error> {
-    let line = camera.check_row(row)?;
-    if cols.start > cols.end {
-        return Err(Error::ColumnOutOfRange {
-            col: cols.start,
-            cols: camera.width(),
-        });
-    }
-    if cols.end > camera.width() {
-        return Err(Error::ColumnOutOfRange {
-            col: cols.end - 1,
-            cols: camera.width(),
-        });
-    }
-    let needed = cols.len();
-    if out.len() != needed {
-        return Err(Error::BufferLength {
-            needed,
-            got: out.len(),
-        });
-    }
-    let among = scene.seen_from_row(camera, line);
-    for (x, pixel) in cols.zip(out.iter_mut()) {
-        let ray = camera.ray(x, row);
-        *pixel = scene.shade(&ray, scene.shoot_among(&ray, among).as_ref());
-    }
-    Ok(())
-}
-
-/// Redraws into `frame` the pixels `damage` holds ([`Damage::row_span`] of each row), as
-/// [`render`](crate::render) would draw them for `scene`: a frame of the scene before an
-/// edit, so redrawn with the damage of that edit, is the frame of the edited scene, bit for
-/// bit.
-///
-/// The frame must have the camera's size, and the damage must have been made for a camera
-/// of that size: otherwise [`Error::SizeMismatch`], and nothing is drawn. See
-/// [`Damage::between`] for an example.
-pub fn render_changes<const N: usize, const L: usize, const W: usize, const H: usize>(
-    scene: &Scene<N, L>,
-    camera: &Camera,
+    map: &ScreenMap,
     damage: &Damage,
-    frame: &mut Framebuffer<W, H>,
-) -> Result<(), Error> {
-    let camera_size = (camera.cols(), camera.rows());
-    if (camera_size.0 as usize, camera_size.1 as usize) != (W, H) {
-        return Err(Error::SizeMismatch {
-            camera: camera_size,
-            target: (
-                W.min(u16::MAX as usize) as u16,
-                H.min(u16::MAX as usize) as u16,
-            ),
-        });
+) -> Option<Option<Area>> {
+    let centre = f3(ball.centre() - camera.eye());
+    let radius = ball.radius().to_num::<f32>() + 1.0 / 256.0;
+    if !exceeds(map.depth(centre) - radius, shadow::NEAREST) {
+        return None;
     }
-    if (damage.cols, damage.rows) != camera_size {
-        return Err(Error::SizeMismatch {
-            camera: camera_size,
-            target: (damage.cols, damage.rows),
-        });
-    }
-    for (y, pixels) in (0..).zip(frame.rows_mut().iter_mut()) {
-        if let Some(span) = damage.row_span(y)
-            && let Some(out) = pixels.get_mut(span.start as usize..span.end as usize)
-        {
-            render_row_span(scene, camera, y, span, out)?;
+    let (right, down) = camera.steps();
+    let mut touches = [[0.0f32; 3]; 4];
+    for (pair, axis) in touches.chunks_exact_mut(2).zip([f3(down), f3(right)]) {
+        let axis = scale(axis, 1.0 / length(axis));
+        let along = dot(centre, axis);
+        let across = sub(centre, scale(axis, along));
+        let apart = length(across);
+        if !exceeds(apart, radius * 1.001) {
+            return None;
+        }
+        // In the plane across the axis: the tangents from the eye meet the circle at the
+        // angle asin(r / apart) either side of the centre, cos(angle) · apart away.
+        let towards = scale(across, 1.0 / apart);
+        let side = cross(axis, towards);
+        let sin = radius / apart;
+        let cos = libm::sqrtf(1.0 - sin * sin);
+        for (touch, sign) in pair.iter_mut().zip([1.0f32, -1.0]) {
+            let tangent = add(scale(towards, cos), scale(side, sign * sin));
+            *touch = add(scale(tangent, cos * apart), scale(axis, along));
         }
     }
-    Ok(())
+    shadow::screen_area(touches.into_iter(), map, damage)
 }
 
 /// Whether every point of `ball` lies behind the eye, so no ray of the screen meets it.
@@ -603,274 +546,92 @@ fn behind_eye(ball: &Sphere, camera: &Camera, map: &ScreenMap) -> bool {
     depth + ball.radius().to_num::<f32>() < -1.0 / 16.0
 }
 
-/// How far a hit point may lie from the surface it was found on, in world units: far more
-/// than a Q16.16 hit point's rounding (a few units of 2⁻¹⁶).
-const ON_SURFACE: f32 = 1.0 / 1024.0;
+#[cfg(test)]
+mod tests {
+    use super::*;
 
-/// Nearer the eye than this (world units, along the view) no point is projected.
-const NEAREST: f32 = 1.0 / 16.0;
+    fn camera() -> Camera {
+        Camera::pinhole(2.0, 2.0, 1.0)
+            .size(Size::new(100, 60))
+            .build()
+            .unwrap()
+    }
 
-/// A sphere casting shadows from a point light. Positions are offsets from the light,
-/// differences taken exactly in Q16.16 and then converted, so that `f32` never subtracts
-/// two large coordinates.
-struct Caster {
-    /// The sphere's centre.
-    centre: F3,
-    radius: f32,
-    /// The light.
-    light: Vec3,
-    /// The light as an offset from the camera's eye.
-    light_from_eye: F3,
-    /// The part of the margin that does not grow with distance (see [`Caster::margin`]).
-    reach: f32,
-}
-
-impl Caster {
-    fn new(ball: &Sphere, light: Vec3, eye: Vec3) -> Self {
-        let radius: f32 = ball.radius().to_num();
-        Caster {
-            centre: f3(ball.centre() - light),
-            radius,
-            light,
-            light_from_eye: f3(light - eye),
-            reach: 1.0 / 256.0 + libm::sqrtf(radius) / 32.0,
+    fn square(x: u16, y: u16) -> Area {
+        Area {
+            left: x,
+            top: y,
+            right: x + 5,
+            bottom: y + 5,
         }
     }
 
-    /// How much wider than its radius the sphere is taken to be, for receiving points as far
-    /// as `distance` from it and from the light.
-    ///
-    /// A shadow ray from a hit point runs towards the light along a Q16.16 unit direction,
-    /// within about 2⁻¹⁵ radians of the exact one: at the sphere it is off the exact segment
-    /// by up to `distance · 2⁻¹⁵`, here taken as `distance / 1024`. The sphere's test rounds
-    /// the ray's closest approach by a few units of 2⁻¹⁶ (the fixed 1/256), and the square
-    /// root that places the crossing along a grazing ray moves it by up to about
-    /// `√(r · 2⁻¹³)`, which widening the sphere by `√r / 32` more than covers: a crossing
-    /// the test puts before the light is then one the widened sphere has before it too.
-    fn margin(&self, distance: f32) -> f32 {
-        self.reach + distance / 1024.0
+    #[test]
+    fn a_ninth_rectangle_merges_the_pair_that_grows_least() {
+        let mut damage = Damage::none(&camera());
+        // Nine squares along a row, the last two closest together.
+        for x in [0, 11, 22, 33, 44, 55, 66, 77, 83] {
+            damage.add(square(x, 0));
+        }
+        assert_eq!(damage.areas().len(), MAX_RECTANGLES);
+        for x in [0, 11, 22, 33, 44, 55, 66, 77, 83] {
+            assert!(damage.areas().iter().any(|a| a.contains(&square(x, 0))));
+        }
+        assert!(damage.areas().contains(&Area {
+            left: 77,
+            top: 0,
+            right: 88,
+            bottom: 5
+        }));
+        // A covered area adds nothing; one covering others replaces them.
+        let before = damage;
+        damage.add(square(78, 0));
+        assert_eq!(damage, before);
+        damage.add(Area {
+            left: 0,
+            top: 0,
+            right: 30,
+            bottom: 10,
+        });
+        assert_eq!(damage.areas().len(), 6);
     }
 
-    /// Whether a shadow of the sphere may fall on `receiver`: always when the light is in
-    /// or near the widened sphere, where no cone bounds the shadow.
-    fn may_shade(&self, receiver: &Sphere) -> bool {
-        let to_receiver = f3(receiver.centre() - self.light);
-        let reach: f32 = receiver.radius().to_num::<f32>() + ON_SURFACE;
-        let apart = length(sub(to_receiver, self.centre));
-        let (caster, other) = (length(self.centre), length(to_receiver));
-        let widened = self.radius + self.margin(apart.max(other) + reach);
-        if !exceeds(caster, widened + 1.0 / 64.0) || other <= reach {
-            return true;
-        }
-        // Every point of the receiver nearer the light than the sphere's near side: a
-        // segment from it to the light cannot reach the sphere.
-        if other + reach < caster - widened {
-            return false;
-        }
-        // Cones from the light around each: the shadow lies in the sphere's, the receiver in
-        // its own. Apart by more than the two half-angles, they never meet.
-        let between = libm::atan2f(
-            length(cross(self.centre, to_receiver)),
-            dot(self.centre, to_receiver),
+    #[test]
+    fn a_row_span_is_the_hull_of_the_rectangles_on_it() {
+        let mut damage = Damage::none(&camera());
+        damage.add(square(10, 10));
+        damage.add(square(40, 12));
+        assert_eq!(damage.row_span(9), None);
+        assert_eq!(damage.row_span(10), Some(10..15));
+        assert_eq!(damage.row_span(13), Some(10..45));
+        assert_eq!(damage.row_span(16), Some(40..45));
+        assert_eq!(damage.row_span(60), None);
+        assert_eq!(damage.pixel_count(), 2 * 5 + 3 * 35 + 2 * 5);
+        let rectangles = damage.rectangles().count();
+        assert_eq!(rectangles, 2);
+    }
+
+    #[test]
+    fn screen_boxes_become_pixels_whose_centres_lie_within_the_margin() {
+        let damage = Damage::none(&camera());
+        // Centres x + ½ within [10.2 − 1, 20.7 + 1]: columns 9 to 21.
+        let area = damage.area_of([10.2, 5.0], [20.7, 6.0], 1.0);
+        assert_eq!(
+            area,
+            Some(Some(Area {
+                left: 9,
+                top: 4,
+                right: 22,
+                bottom: 7
+            }))
         );
-        let half = |r: f32, d: f32| libm::asinf((r / d).min(1.0));
-        !exceeds(
-            between,
-            half(widened, caster) + half(reach, other) + 1.0 / 1024.0,
-        )
+        // Off the screen, clipped; not finite, refused.
+        assert_eq!(
+            damage.area_of([-50.0, -9.0], [-20.0, -5.0], 2.0),
+            Some(None)
+        );
+        let far = damage.area_of([-1e30, 0.0], [1e30, 1.0], 2.0);
+        assert_eq!(far.flatten().map(|a| (a.left, a.right)), Some((0, 100)));
+        assert_eq!(damage.area_of([f32::NAN, 0.0], [1.0, 1.0], 2.0), None);
     }
-
-    /// The pixels of `plane` the shadow may fall on: `Some(None)` where it casts none there,
-    /// `None` where it cannot be bounded (it stretches too far, or reaches behind the eye).
-    ///
-    /// A shadowed hit point `P` lies within [`ON_SURFACE`] of the plane (a slab), and its
-    /// segment to the light meets the widened sphere at some `Q`, which lies between the
-    /// slab's bottom and the light's height: `Q` is in the box around the sphere cut to those
-    /// heights. Along the ray from the light through `Q`, `P` lies between `Q` (or where the
-    /// ray enters the slab, if `Q` is above it) and where it leaves the slab. Central
-    /// projection from the light keeps convex hulls, so `P` lies in the hull of the cut
-    /// box's corners, each taken into the slab's faces so; and so does its pixel, in the
-    /// screen box of those points, all of them ahead of the eye.
-    fn on_plane(&self, plane: &Plane, map: &ScreenMap, damage: &Damage) -> Option<Option<Area>> {
-        let normal = f3(plane.normal());
-        // Heights above the plane, on the light's side.
-        let to_light = -dot(normal, f3(plane.point() - self.light));
-        if !exceeds(to_light.abs(), 1.0 / 64.0) {
-            return None;
-        }
-        let up = if to_light > 0.0 {
-            normal
-        } else {
-            scale(normal, -1.0)
-        };
-        let light_height = to_light.abs();
-        let centre_height = light_height + dot(up, self.centre);
-        let (across, along) = perpendiculars(up);
-        // The margin grows with distance: it is worked out again until it covers the
-        // farthest point it gives.
-        let mut distance = 0.0f32;
-        for _ in 0..4 {
-            let half = self.radius + self.margin(distance);
-            let low = (centre_height - half).max(-ON_SURFACE);
-            let high = (centre_height + half).min(light_height);
-            if low > high {
-                return Some(None);
-            }
-            // Beyond 63/64 of the light's height the shadow stretches more than 64 times as
-            // far from the light as the sphere: not worth bounding.
-            if !exceeds(light_height * (63.0 / 64.0), high) {
-                return None;
-            }
-            let mut points = [[0.0f32; 3]; 32];
-            let mut count = 0;
-            // The cut box in two: below the slab's top, a corner is a point of the slab
-            // itself; above, its ray enters the slab at the top face.
-            let top = ON_SURFACE.clamp(low, high);
-            for (from, to, above) in [(low, top, false), (top, high, true)] {
-                if from > to {
-                    continue;
-                }
-                for height in [from, to] {
-                    for (a, b) in [(-1.0, -1.0), (-1.0, 1.0), (1.0, -1.0), (1.0, 1.0)] {
-                        let corner = add(
-                            add(self.centre, scale(up, height - centre_height)),
-                            add(scale(across, a * half), scale(along, b * half)),
-                        );
-                        // The ray from the light through the corner is at height h at the
-                        // fraction (light − h) / (light − corner) of the way along, past 1.
-                        let at =
-                            |h: f32| scale(corner, (light_height - h) / (light_height - height));
-                        let enters = if above { at(ON_SURFACE) } else { corner };
-                        for p in [enters, at(-ON_SURFACE)] {
-                            if let Some(slot) = points.get_mut(count) {
-                                *slot = p;
-                                count += 1;
-                            }
-                        }
-                    }
-                }
-            }
-            let points = points.get(..count)?;
-            let farthest = points.iter().fold(0.0f32, |m, &p| {
-                m.max(length(p)).max(length(sub(p, self.centre)))
-            });
-            if !farthest.is_finite() {
-                return None;
-            }
-            if farthest <= distance {
-                return screen_area(
-                    points.iter().map(|&p| add(self.light_from_eye, p)),
-                    map,
-                    damage,
-                );
-            }
-            distance = farthest * 1.25 + 1.0;
-        }
-        None
-    }
-}
-
-/// The pixels that may show points `from_eye` (offsets from the eye) and anything in their
-/// convex hull, or `None` if one lies less than [`NEAREST`] ahead of the eye. Empty (inner
-/// `None`) when the box misses the screen.
-fn screen_area(
-    from_eye: impl Iterator<Item = F3>,
-    map: &ScreenMap,
-    damage: &Damage,
-) -> Option<Option<Area>> {
-    let (mut min, mut max) = ([f32::MAX; 2], [f32::MIN; 2]);
-    let mut nearest = f32::MAX;
-    for d in from_eye {
-        let [u, v] = map.position(d, NEAREST)?;
-        nearest = nearest.min(map.depth(d));
-        (min[0], min[1]) = (min[0].min(u), min[1].min(v));
-        (max[0], max[1]) = (max[0].max(u), max[1].max(v));
-    }
-    if !exceeds(f32::MAX, nearest) {
-        return Some(None);
-    }
-    // Two pixels: a ray may miss its exact direction by half a pixel (see `Camera`), and
-    // `f32` rounding here is a small fraction of one. A hit point's own rounding, a few
-    // units of 2⁻¹⁶ (taken as 2⁻¹²), moves its picture by up to about view / depth times
-    // that, and more towards the screen's edges, by (view² + offset²) / view.
-    let view = map.view();
-    let offset = [min[0].abs(), max[0].abs(), min[1].abs(), max[1].abs()]
-        .into_iter()
-        .fold(0.0f32, f32::max)
-        + f32::from(damage.cols.max(damage.rows));
-    let margin = 2.0 + (view + offset * offset / view) / (nearest * 4096.0) + offset / 65536.0;
-    damage.area_of(min, max, margin)
-}
-
-/// The pixels that may see `plane`, if it is bounded and its rectangle lies ahead of the
-/// eye: inner `None` when none can; `None` when it is unbounded or not wholly ahead.
-fn plane_area(plane: &Plane, eye: Vec3, map: &ScreenMap, damage: &Damage) -> Option<Option<Area>> {
-    let [min, max] = plane.bounds()?;
-    let normal = plane.normal();
-    let (nx, ny, nz) = (normal.x.abs(), normal.y.abs(), normal.z.abs());
-    // The axes `Plane::coords` measures the bounds on, and the one it drops.
-    let (a, b, dropped) = if ny >= nx && ny >= nz {
-        (0, 2, 1)
-    } else if nz >= nx {
-        (0, 1, 2)
-    } else {
-        (1, 2, 0)
-    };
-    let n = f3(normal);
-    let (point, eye) = (f3(plane.point()), f3(eye));
-    let slack = 1.0 / 256.0;
-    let mut corners = [[0.0f32; 3]; 8];
-    let mut count = 0;
-    for u in [
-        min[0].to_num::<f32>() - slack,
-        max[0].to_num::<f32>() + slack,
-    ] {
-        for v in [
-            min[1].to_num::<f32>() - slack,
-            max[1].to_num::<f32>() + slack,
-        ] {
-            let mut p = [0.0f32; 3];
-            p[a] = u;
-            p[b] = v;
-            // On the plane: n·(p − point) = 0 fixes the dropped coordinate (its normal
-            // component is the largest, at least 1/√3).
-            p[dropped] =
-                point[dropped] - (n[a] * (u - point[a]) + n[b] * (v - point[b])) / n[dropped];
-            for side in [-ON_SURFACE, ON_SURFACE] {
-                if let Some(slot) = corners.get_mut(count) {
-                    *slot = add(sub(p, eye), scale(n, side));
-                    count += 1;
-                }
-            }
-        }
-    }
-    screen_area(corners.into_iter(), map, damage)
-}
-
-fn sub(a: F3, b: F3) -> F3 {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-
-fn add(a: F3, b: F3) -> F3 {
-    [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
-}
-
-fn scale(a: F3, k: f32) -> F3 {
-    [a[0] * k, a[1] * k, a[2] * k]
-}
-
-fn length(a: F3) -> f32 {
-    libm::sqrtf(dot(a, a))
-}
-
-/// Two unit vectors perpendicular to the unit `n` and to each other.
-fn perpendiculars(n: F3) -> (F3, F3) {
-    let other = if n[0].abs() < 0.6 {
-        [1.0, 0.0, 0.0]
-    } else {
-        [0.0, 1.0, 0.0]
-    };
-    let a = cross(n, other);
-    let a = scale(a, 1.0 / length(a));
-    (a, cross(n, a))
 }

@@ -31,6 +31,34 @@ pub(crate) fn cross(a: F3, b: F3) -> F3 {
     ]
 }
 
+pub(crate) fn sub(a: F3, b: F3) -> F3 {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+
+pub(crate) fn add(a: F3, b: F3) -> F3 {
+    [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
+}
+
+pub(crate) fn scale(a: F3, k: f32) -> F3 {
+    [a[0] * k, a[1] * k, a[2] * k]
+}
+
+pub(crate) fn length(a: F3) -> f32 {
+    libm::sqrtf(dot(a, a))
+}
+
+/// Two unit vectors perpendicular to the unit `n` and to each other.
+pub(crate) fn perpendiculars(n: F3) -> (F3, F3) {
+    let other = if n[0].abs() < 0.6 {
+        [1.0, 0.0, 0.0]
+    } else {
+        [0.0, 1.0, 0.0]
+    };
+    let a = cross(n, other);
+    let a = scale(a, 1.0 / length(a));
+    (a, cross(n, a))
+}
+
 /// A camera's screen as a map from points (given as offsets from the eye) to pixel
 /// positions.
 ///
