@@ -1,5 +1,7 @@
 //! The chapter's double loop: for each pixel, shoot a ray through its centre and shade it.
 
+use core::ops::Range;
+
 use crate::error::Error;
 use crate::framebuffer::Framebuffer;
 use crate::geometry::ray::Ray;
@@ -44,6 +46,7 @@ pub fn render_row<const N: usize, const L: usize>(
         scene,
         camera,
         row,
+        0..camera.cols(),
         sky.is_some(),
         |first, end, cast| match cast {
             Some((ray, hit)) => {
@@ -59,6 +62,44 @@ pub fn render_row<const N: usize, const L: usize>(
         },
     );
     Ok(())
+}
+
+/// [`render_row`]'s pixels for columns `cols` of a checked display row, into `out`
+/// (`out[0]` is column `cols.start`): the same walk along the row, started and stopped at the
+/// span's ends, so the pixels are bit for bit those of the whole row. Columns past the row or
+/// past `out` are not drawn.
+pub(crate) fn render_columns<const N: usize, const L: usize>(
+    scene: &Scene<N, L>,
+    camera: &Camera,
+    row: u16,
+    cols: Range<u16>,
+    out: &mut [Rgb],
+) {
+    // Where nothing can be hit a plain sky needs no rays: `shade` would give its colour.
+    let sky = scene.background().plain_colour();
+    let offset = cols.start;
+    cast_row(
+        scene,
+        camera,
+        row,
+        cols,
+        sky.is_some(),
+        |first, end, cast| {
+            let (first, end) = ((first - offset) as usize, (end - offset) as usize);
+            match cast {
+                Some((ray, hit)) => {
+                    if let Some(pixel) = out.get_mut(first) {
+                        *pixel = crate::scene::linear::to_rgb(scene.radiance(ray, hit));
+                    }
+                }
+                None => {
+                    if let (Some(run), Some(sky)) = (out.get_mut(first..end), sky) {
+                        run.fill(sky);
+                    }
+                }
+            }
+        },
+    );
 }
 
 /// Shoots the ray of every pixel of display row `y` into the scene, nearest hit first, and
@@ -92,11 +133,18 @@ pub fn shoot_row<const N: usize, const L: usize>(
     mut each: impl FnMut(u32, &Ray, Option<SceneHit>),
 ) -> Result<(), Error> {
     let row = camera.check_row(y)?;
-    cast_row(scene, camera, row, false, |col, _, cast| {
-        if let Some((ray, hit)) = cast {
-            each(col.into(), ray, hit);
-        }
-    });
+    cast_row(
+        scene,
+        camera,
+        row,
+        0..camera.cols(),
+        false,
+        |col, _, cast| {
+            if let Some((ray, hit)) = cast {
+                each(col.into(), ray, hit);
+            }
+        },
+    );
     Ok(())
 }
 
@@ -124,16 +172,23 @@ pub fn shoot_row_skipping<const N: usize, const L: usize>(
     mut each: impl FnMut(u32, &Ray, Option<SceneHit>),
 ) -> Result<(), Error> {
     let row = camera.check_row(y)?;
-    cast_row(scene, camera, row, true, |first, end, cast| match cast {
-        Some((ray, hit)) => each(first.into(), ray, hit),
-        None => empty(first.into()..end.into()),
-    });
+    cast_row(
+        scene,
+        camera,
+        row,
+        0..camera.cols(),
+        true,
+        |first, end, cast| match cast {
+            Some((ray, hit)) => each(first.into(), ray, hit),
+            None => empty(first.into()..end.into()),
+        },
+    );
     Ok(())
 }
 
 /// The engine of [`shoot_row`] and [`render_row`]: the row's runs ([`Runs`]), and in each the
 /// rays, by column steps ([`Camera::row_rays`]), shot at the run's objects; each is handed to
-/// `each(col, col + 1, Some((ray, hit)))`.
+/// `each(col, col + 1, Some((ray, hit)))`. Only columns `cols` are cast.
 ///
 /// With `skip_empty`, a run in which no object can be hit is handed over whole and without
 /// rays, as `each(first, end, None)`: `render_row` paints a plain sky so, which needs no ray.
@@ -141,10 +196,12 @@ fn cast_row<const N: usize, const L: usize>(
     scene: &Scene<N, L>,
     camera: &Camera,
     row: u16,
+    cols: Range<u16>,
     skip_empty: bool,
     mut each: impl FnMut(u16, u16, Option<(&Ray, Option<SceneHit>)>),
 ) {
     let mut runs = Runs::new(scene, camera, row);
+    runs.limit(cols);
     while let Some((first, end, here)) = runs.next_run() {
         if here == 0 && skip_empty {
             each(first, end, None);

@@ -68,6 +68,14 @@ impl<'a, const N: usize, const L: usize> Runs<'a, N, L> {
         runs
     }
 
+    /// Limits the walk to columns `cols` (clipped to the row): started and stopped there it
+    /// finds the runs of the whole row cut at those columns, since each run is found from the
+    /// column it starts at. In place: a `Runs` is a few hundred bytes, not to be copied.
+    pub(crate) fn limit(&mut self, cols: core::ops::Range<u16>) {
+        self.cols = cols.end.min(self.cols);
+        self.col = cols.start.min(self.cols);
+    }
+
     /// What rays from the eye share, for [`Scene::shoot_from_eye`].
     pub(crate) const fn eye(&self) -> &Eye<N> {
         &self.eye

@@ -14,8 +14,8 @@ use crate::scene::colour::Rgb;
 /// pixels [`render_row`](crate::render_row) gives them, bit for bit, for a display that is
 /// sent only the part of a row that changed ([`Damage::row_span`]).
 ///
-/// Each pixel is traced on its own ([`Camera::ray`], [`Scene::shoot_among`] with the row's
-/// culling, [`Scene::shade`]). A row off the screen is [`Error::RowOutOfRange`], columns
+/// The span is walked as [`render_row`](crate::render_row) walks the whole row (its culling,
+/// its runs of columns, its rays by column steps), started and stopped at the span's ends. A row off the screen is [`Error::RowOutOfRange`], columns
 /// past its right edge (or a range that ends before it starts) [`Error::ColumnOutOfRange`],
 /// and a buffer that is not `cols.len()` long [`Error::BufferLength`].
 ///
@@ -57,11 +57,9 @@ pub fn render_row_span<const N: usize, const L: usize>(
             got: out.len(),
         });
     }
-    let among = scene.seen_from_row(camera, line);
-    for (x, pixel) in cols.zip(out.iter_mut()) {
-        let ray = camera.ray(x, row);
-        *pixel = scene.shade(&ray, scene.shoot_among(&ray, among).as_ref());
-    }
+    // The checks above bound both ends by the width, at most MAX_PIXELS: they fit a u16.
+    let (first, end) = (cols.start as u16, cols.end as u16);
+    crate::render::rows::render_columns(scene, camera, line, first..end, out);
     Ok(())
 }
 
