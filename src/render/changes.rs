@@ -56,6 +56,7 @@ use embedded_graphics::geometry::{Point, Size};
 use embedded_graphics::primitives::Rectangle;
 
 use crate::geometry::shape::Shape;
+use crate::render::accel::cull::near_row_plane;
 use crate::render::camera::Camera;
 use crate::render::camera::project::ScreenMap;
 use crate::scene::Scene;
@@ -431,34 +432,68 @@ impl Damage {
                 }
             }
         }
-        self.silhouettes(before, camera, &map, &outline_before)?;
-        self.silhouettes(after, camera, &map, &outline_after)
+        self.silhouettes(
+            [(before, &outline_before), (after, &outline_after)],
+            camera,
+            &map,
+        )
     }
 
-    /// Adds the silhouettes of the spheres of `scene` marked in `marked`: the columns of
-    /// the camera's span of each by the rows whose culling keeps it (what `render_row`
-    /// tries it on), met with its outline. `O(rows · objects)`: one culling a row.
+    /// Adds the silhouettes of the spheres marked in each `(scene, marked)` pair: the columns
+    /// of the camera's span of each by the rows whose culling keeps it (what `render_row`
+    /// tries it on), met with its outline. `O(rows · marked)`: each row's plane is found once
+    /// for both scenes, and only the marked spheres are tested against it, by the test
+    /// [`Scene::seen_from_row`] makes.
     fn silhouettes<const N: usize, const L: usize>(
         &mut self,
-        scene: &Scene<N, L>,
+        scenes: [(&Scene<N, L>, &[bool; N]); 2],
         camera: &Camera,
         map: &ScreenMap,
-        marked: &[bool; N],
     ) -> Option<()> {
-        if !marked.iter().any(|&m| m) {
+        if scenes.iter().all(|(_, marked)| !marked.iter().any(|&m| m)) {
             return Some(());
         }
         // First and last row (inclusive) on which each marked sphere survives culling.
-        let mut rows = [(u16::MAX, 0u16); N];
+        let mut rows = [[(u16::MAX, 0u16); N]; 2];
+        let eye = camera.eye();
         for row in 0..camera.rows() {
-            let among = scene.seen_from_row(camera, row);
-            for (index, range) in rows.iter_mut().enumerate() {
-                // Objects past the 64th are never culled.
-                if index >= 64 || among & (1 << index) != 0 {
-                    *range = (range.0.min(row), range.1.max(row));
+            let normal = camera.row_plane_normal(row);
+            for ((scene, marked), rows) in scenes.iter().zip(rows.iter_mut()) {
+                for (index, object) in scene.objects().iter().enumerate() {
+                    let (Some(true), Some(range)) =
+                        (marked.get(index).copied(), rows.get_mut(index))
+                    else {
+                        continue;
+                    };
+                    // Objects past the 64th, and rows without a plane, are never culled.
+                    let kept = match (normal, object.shape) {
+                        (Some(normal), Shape::Sphere(ball)) if index < 64 => {
+                            near_row_plane(&ball, eye, normal)
+                        }
+                        _ => true,
+                    };
+                    if kept {
+                        *range = (range.0.min(row), range.1.max(row));
+                    }
                 }
             }
         }
+        for ((scene, marked), rows) in scenes.iter().zip(&rows) {
+            self.outlines(scene, marked, rows, camera, map)?;
+        }
+        Some(())
+    }
+
+    /// The silhouettes of [`Damage::silhouettes`] for one scene, given the rows each marked
+    /// sphere survives culling on.
+    fn outlines<const N: usize, const L: usize>(
+        &mut self,
+        scene: &Scene<N, L>,
+        marked: &[bool; N],
+        rows: &[(u16, u16); N],
+        camera: &Camera,
+        map: &ScreenMap,
+    ) -> Option<()> {
         for (index, object) in scene.objects().iter().enumerate() {
             let (Some(true), Some(&(top, last))) = (marked.get(index).copied(), rows.get(index))
             else {

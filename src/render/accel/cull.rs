@@ -3,6 +3,7 @@
 
 use crate::geometry::ray::Ray;
 use crate::geometry::shape::Shape;
+use crate::geometry::sphere::Sphere;
 use crate::numbers::fx::Fx;
 use crate::numbers::vec3::Vec3;
 use crate::scene::hit::SceneHit;
@@ -35,16 +36,10 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         };
         let mut among = !0u64;
         for (index, object) in self.objects().iter().enumerate().take(64) {
-            if let Shape::Sphere(sphere) = object.shape {
-                let to_centre = sphere.centre() - camera.eye();
-                // Ray directions are within a few units of 2⁻¹⁶ of the row plane: over a
-                // distance D they stray by less than D · 2⁻¹², and the normal's own rounding
-                // adds as much again.
-                let reach = to_centre.x.abs() + to_centre.y.abs() + to_centre.z.abs();
-                let margin = (reach >> 11) + Fx::from_bits(1 << 8);
-                if normal.dot(to_centre).abs() > sphere.radius() + margin {
-                    among &= !(1 << index);
-                }
+            if let Shape::Sphere(sphere) = object.shape
+                && !near_row_plane(&sphere, camera.eye(), normal)
+            {
+                among &= !(1 << index);
             }
         }
         among
@@ -128,4 +123,17 @@ impl<const N: usize> Eye<N> {
     pub(crate) fn numerator(&self, index: usize) -> i64 {
         self.numerators.get(index).copied().unwrap_or(0)
     }
+}
+
+/// Whether `sphere` may meet a ray of the row whose plane through `eye` has the unit normal
+/// `normal` (see `Camera::row_plane_normal`): [`Scene::seen_from_row`]'s test for one sphere,
+/// which the damage of an edit repeats exactly.
+#[inline(always)]
+pub(crate) fn near_row_plane(sphere: &Sphere, eye: Vec3, normal: Vec3) -> bool {
+    let to_centre = sphere.centre() - eye;
+    // Ray directions are within a few units of 2⁻¹⁶ of the row plane: over a distance D they
+    // stray by less than D · 2⁻¹², and the normal's own rounding adds as much again.
+    let reach = to_centre.x.abs() + to_centre.y.abs() + to_centre.z.abs();
+    let margin = (reach >> 11) + Fx::from_bits(1 << 8);
+    normal.dot(to_centre).abs() <= sphere.radius() + margin
 }
