@@ -877,3 +877,77 @@ fn bad_sizes_are_errors() {
     assert_eq!(whole.pixel_count(), 32 * 24);
     assert_eq!(whole.rectangles().count(), 1);
 }
+
+/// `Viewport::redraw` on a display the picture only partly covers (off its left edge, at an
+/// offset, dithered to Rgb565): after each frame of the rolling ball, the display equals a
+/// fresh render of the frame, and it was sent no more pixels than the damage holds.
+#[test]
+fn a_viewport_redraws_a_display_through_the_damage() {
+    use embedded_graphics::pixelcolor::Rgb565;
+    use embedded_graphics::prelude::{DrawTarget, OriginDimensions, Pixel, Point, Size};
+    use embedded_graphics_simulator::SimulatorDisplay;
+    use fixray::Viewport;
+
+    /// A simulator display that counts the pixels it is sent.
+    struct Counted(SimulatorDisplay<Rgb565>, usize);
+    impl OriginDimensions for Counted {
+        fn size(&self) -> Size {
+            self.0.size()
+        }
+    }
+    impl DrawTarget for Counted {
+        type Color = Rgb565;
+        type Error = core::convert::Infallible;
+        fn draw_iter<I: IntoIterator<Item = Pixel<Rgb565>>>(
+            &mut self,
+            pixels: I,
+        ) -> Result<(), Self::Error> {
+            for pixel in pixels {
+                self.1 += 1;
+                self.0.draw_iter([pixel])?;
+            }
+            Ok(())
+        }
+    }
+
+    let camera = fixray::demo::camera(96, 64).unwrap();
+    let at = Point::new(-20, 30);
+    let mut row = [fixray::Rgb::BLACK; 96];
+    let mut display = Counted(SimulatorDisplay::new(Size::new(120, 80)), 0);
+    let first = fixray::demo::rolling(0);
+    Viewport::at(&first, &camera, at)
+        .render(&mut row, &mut display)
+        .unwrap();
+    for frame in 1..fixray::demo::ROLLING_FRAMES {
+        let (before, after) = (
+            fixray::demo::rolling(frame - 1),
+            fixray::demo::rolling(frame),
+        );
+        let damage = Damage::between(&before, &after, &camera);
+        display.1 = 0;
+        Viewport::at(&after, &camera, at)
+            .redraw(&damage, &mut row, &mut display)
+            .unwrap();
+        assert!(
+            display.1 as u32 <= damage.pixel_count(),
+            "frame {frame}: {} sent",
+            display.1
+        );
+        let mut fresh = SimulatorDisplay::<Rgb565>::new(Size::new(120, 80));
+        Viewport::at(&after, &camera, at)
+            .render(&mut row, &mut fresh)
+            .unwrap();
+        assert!(
+            display.0 == fresh,
+            "frame {frame} differs from a fresh render"
+        );
+    }
+    // The damage must fit the camera.
+    let other = fixray::demo::camera(32, 24).unwrap();
+    let wrong = Damage::between(&first, &fixray::demo::rolling(1), &other);
+    assert!(
+        Viewport::at(&first, &camera, at)
+            .redraw(&wrong, &mut row, &mut display)
+            .is_err()
+    );
+}

@@ -15,6 +15,7 @@ use super::error::DrawError;
 use super::picture::Picture;
 use crate::error::Error;
 use crate::render::camera::Camera;
+use crate::render::changes::{Damage, render_row_span};
 use crate::render::rows::render_row;
 use crate::scene::Scene;
 use crate::scene::colour::Rgb;
@@ -123,6 +124,86 @@ impl<'a, const N: usize, const L: usize> Viewport<'a, N, L> {
         D::Color: FromRgb,
     {
         self.render_rows(0..self.camera.height(), buffer, display)
+    }
+
+    /// Sends the display only what an edit of the scene changed: the pixels `damage` holds
+    /// ([`Damage::between`](crate::Damage::between) of the scene before and after, for this
+    /// viewport's camera), one row span at a time through `buffer` (at least the widest span;
+    /// a row is always enough), each as one [`fill_contiguous`](DrawTarget::fill_contiguous)
+    /// of a one-row window. The display, showing the picture of the scene before the edit,
+    /// then shows the picture of the scene after it, as [`render`](Self::render) would draw it,
+    /// dithering included; clipped to the display as it is.
+    ///
+    /// A damage made for another size of camera is [`Error::SizeMismatch`], and a buffer
+    /// shorter than a span [`Error::BufferLength`]; nothing is sent for that span on.
+    ///
+    /// ```
+    /// use embedded_graphics::{pixelcolor::Rgb565, prelude::*};
+    /// use embedded_graphics_simulator::SimulatorDisplay;
+    /// use fixray::{demo, Damage, Rgb, Sphere, Viewport};
+    ///
+    /// let camera = demo::camera(160, 128)?;
+    /// let mut scene = demo::scene();
+    /// let ball = scene.add_sphere(Sphere::new([1.0, -3.0, -9.0], 1.0)?, Rgb::WHITE)?;
+    /// let mut display = SimulatorDisplay::<Rgb565>::new(Size::new(160, 128));
+    /// let mut row = [Rgb::BLACK; 160];
+    /// Viewport::at(&scene, &camera, Point::zero()).render(&mut row, &mut display)?;
+    ///
+    /// let before = scene.clone();
+    /// scene.set_shape(ball, Sphere::new([1.5, -3.0, -9.0], 1.0)?.into())?;
+    /// let damage = Damage::between(&before, &scene, &camera);
+    /// Viewport::at(&scene, &camera, Point::zero()).redraw(&damage, &mut row, &mut display)?;
+    ///
+    /// let mut fresh = SimulatorDisplay::<Rgb565>::new(Size::new(160, 128));
+    /// Viewport::at(&scene, &camera, Point::zero()).render(&mut row, &mut fresh)?;
+    /// assert!(display == fresh);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn redraw<D>(
+        &self,
+        damage: &Damage,
+        buffer: &mut [Rgb],
+        display: &mut D,
+    ) -> Result<(), DrawError<D::Error>>
+    where
+        D: DrawTarget,
+        D::Color: FromRgb,
+    {
+        let (cols, rows) = (self.camera.cols(), self.camera.rows());
+        if damage.size() != Size::new(u32::from(cols), u32::from(rows)) {
+            let size = damage.size();
+            return Err(Error::SizeMismatch {
+                camera: (cols, rows),
+                target: (size.width as u16, size.height as u16),
+            }
+            .into());
+        }
+        let (shown_cols, shown_rows) = visible(self.top_left, self.size(), &display.bounding_box());
+        for y in shown_rows {
+            let Some(span) = damage.row_span(y) else {
+                continue;
+            };
+            let span = span.start.max(shown_cols.start)..span.end.min(shown_cols.end);
+            if span.is_empty() {
+                continue;
+            }
+            let got = buffer.len();
+            let line = buffer.get_mut(..span.len()).ok_or(Error::BufferLength {
+                needed: span.len(),
+                got,
+            })?;
+            render_row_span(self.scene, self.camera, y, span.clone(), line)?;
+            // On the display, below i32::MAX: `visible` keeps only such pixels.
+            let top_left = Point::new(
+                self.top_left.x.wrapping_add(span.start as i32),
+                self.top_left.y.wrapping_add(y as i32),
+            );
+            let area = Rectangle::new(top_left, Size::new(span.len() as u32, 1));
+            display
+                .fill_contiguous(&area, converted(core::iter::once(&*line), top_left))
+                .map_err(DrawError::Display)?;
+        }
+        Ok(())
     }
 
     /// The picture as an embedded-graphics [`Drawable`](embedded_graphics::Drawable) in
