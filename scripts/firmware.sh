@@ -161,15 +161,18 @@ failed=0
 calibrations=()
 declare -A per_pixel_of flash_of ram_of # by "target renderer"
 names=()
+run_firmware() { # target, bin: runs one firmware under QEMU into $log; its exit status in $status
+    status=0
+    (cd "$firmware" && cargo run --quiet --release --target "$1" \
+        --config "$(remap "$1")" --bin "$2") \
+        >"$log" 2>&1 || status=$?
+}
 row() { printf '%-28s %-24s %-8s %12s %9s %7s %7s %7s %7s\n' "$@"; }
 row target renderer hash instr/frame instr/px flash ram static stack
 for target in "${targets[@]}"; do
     for bin in "${bins[@]}"; do
         log="$logs/$target-$bin.txt"
-        status=0
-        (cd "$firmware" && cargo run --quiet --release --target "$target" \
-            --config "$(remap "$target")" --bin "$bin") \
-            >"$log" 2>&1 || status=$?
+        run_firmware "$target" "$bin"
         renderer=$(field renderer "$(line board=)")
         frame=$(line frame:)
         memory=$(line memory:)
@@ -210,10 +213,7 @@ drow() { printf '%-28s %-8s %-8s %-8s %7s\n' "$@"; }
 drow target scene via hash stack
 for target in "${targets[@]}"; do
     log="$logs/$target-draw.txt"
-    status=0
-    (cd "$firmware" && cargo run --quiet --release --target "$target" \
-        --config "$(remap "$target")" --bin draw) \
-        >"$log" 2>&1 || status=$?
+    run_firmware "$target" draw
     draws=$(line draw:)
     if ((status != 0)) || (($(grep -c . <<<"$draws") != 4)); then
         drow "$target" draw - FAILED "exit $status"
@@ -241,10 +241,7 @@ declare -A anim_partial anim_full anim_damage anim_ram
 anim_pixels=""
 for target in "${targets[@]}"; do
     log="$logs/$target-animate.txt"
-    status=0
-    (cd "$firmware" && cargo run --quiet --release --target "$target" \
-        --config "$(remap "$target")" --bin animate) \
-        >"$log" 2>&1 || status=$?
+    run_firmware "$target" animate
     animate=$(line animate:)
     memory=$(line memory:)
     frames=$(field frames "$animate")

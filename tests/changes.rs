@@ -425,12 +425,19 @@ fn sequence<const W: usize, const H: usize>(seed: u64, wild: bool, tally: &mut T
     }
 }
 
-#[test]
-fn a_redrawn_frame_is_the_edited_scenes_frame() {
-    let cases: u64 = std::env::var("FIXRAY_CHANGES_CASES")
+/// The number of edit sequences a property test runs: `FIXRAY_CHANGES_CASES` (150 unless
+/// set) divided by `share`, rounded up.
+fn sequences(share: u64) -> u64 {
+    std::env::var("FIXRAY_CHANGES_CASES")
         .ok()
         .and_then(|v| v.parse().ok())
-        .unwrap_or(150);
+        .unwrap_or(150u64)
+        .div_ceil(share)
+}
+
+#[test]
+fn a_redrawn_frame_is_the_edited_scenes_frame() {
+    let cases = sequences(1);
     let mut tally = Tally {
         edge: u32::MAX,
         ..Tally::default()
@@ -468,11 +475,7 @@ fn a_redrawn_frame_is_the_edited_scenes_frame() {
 #[test]
 fn wild_scenes_redrawn_are_the_edited_scenes_frames() {
     // A quarter as many sequences as the tame test.
-    let cases: u64 = std::env::var("FIXRAY_CHANGES_CASES")
-        .ok()
-        .and_then(|v| v.parse().ok())
-        .unwrap_or(150u64)
-        .div_ceil(4);
+    let cases = sequences(4);
     let mut tally = Tally {
         edge: u32::MAX,
         ..Tally::default()
@@ -559,11 +562,7 @@ fn opaque(material: Material) -> Material {
 fn hostile_worlds_keep_the_contract() {
     // The hostile tests' worlds (huge and tiny spheres, planes at any angle, mirrors, eyes
     // on surfaces), edited by swapping in objects of another such world or nudging a sphere.
-    let cases: u64 = std::env::var("FIXRAY_CHANGES_CASES")
-        .ok()
-        .and_then(|v| v.parse().ok())
-        .unwrap_or(150u64)
-        .div_ceil(2);
+    let cases = sequences(2);
     let (mut edits, mut whole) = (0, 0);
     for seed in 0..cases {
         let mut src = XorShift::new(1 << 50 | seed);
