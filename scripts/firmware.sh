@@ -311,6 +311,22 @@ per_chip() { # array name, renderer: the figures for every chip, " / " between t
     local IFS=/
     echo "${out[*]}" | sed 's|/| / |g'
 }
+chip_columns() { # first heading [with-boards]: a table's head, one right-aligned column a chip
+    local target
+    printf '| %s |' "$1"
+    for target in "${targets[@]}"; do
+        if [[ ${2:-} == with-boards ]]; then
+            printf ' %s (%s) |' "${chip_of[$target]}" "${board_of[$target]}"
+        else
+            printf ' %s |' "${chip_of[$target]}"
+        fi
+    done
+    printf '\n|---|'
+    for target in "${targets[@]}"; do
+        printf -- '---:|'
+    done
+    echo
+}
 tables() {
     local target entry renderer text chips=()
     for target in "${targets[@]}"; do
@@ -318,15 +334,7 @@ tables() {
     done
     echo "Instructions per pixel at 160 × 128 (\`scripts/firmware.sh --markdown\`, $(rustc --version | cut -d' ' -f1-2), $(qemu-system-arm --version | head -n 1 | sed 's/ emulator version / /; s/ (.*//'), \`opt-level = 3\`, LTO):"
     echo
-    printf '| renderer, scene |'
-    for target in "${targets[@]}"; do
-        printf ' %s (%s) |' "${chip_of[$target]}" "${board_of[$target]}"
-    done
-    printf '\n|---|'
-    for target in "${targets[@]}"; do
-        printf -- '---:|'
-    done
-    echo
+    chip_columns "renderer, scene" with-boards
     for entry in "${cost_rows[@]}"; do
         renderer=${entry%%|*} text=${entry#*|}
         printf '| %s |' "$text"
@@ -352,15 +360,7 @@ tables() {
     local pixels=${anim_pixels:-0} all=$((160 * 128))
     echo "Animation (\`firmware/src/bin/animate.rs\`): a ball of radius 1 rolling across the demo floor at 160 × 128, instructions a frame averaged over its frames, redrawing only the changed region (\`Damage\`) and the whole frame; the partial redraws send $(grouped $((2 * pixels))) bytes of Rgb565 a frame against $(grouped $((2 * all))), $(awk -v p="$pixels" -v a="$all" 'BEGIN { printf "%.1f", 100 * p / a }') %:"
     echo
-    printf '| redraw |'
-    for target in "${targets[@]}"; do
-        printf ' %s |' "${chip_of[$target]}"
-    done
-    printf '\n|---|'
-    for target in "${targets[@]}"; do
-        printf -- '---:|'
-    done
-    echo
+    chip_columns redraw
     printf '| partial (finding the region included) |'
     for target in "${targets[@]}"; do printf ' %s |' "$(grouped "${anim_partial[$target]:-}")"; done
     echo
