@@ -64,6 +64,25 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         })
     }
 
+    /// [`Scene::shoot_from_eye`] for a set of one object, `index`: its hit, if any.
+    #[inline]
+    pub(crate) fn shoot_one_from_eye(
+        &self,
+        ray: &Ray,
+        index: usize,
+        eye: &Eye<N>,
+    ) -> Option<SceneHit> {
+        let object = self.objects().get(index)?;
+        let t = match object.shape {
+            Shape::Plane(plane) => plane.hit_distance_from(ray, eye.numerator(index)),
+            Shape::Sphere(sphere) => sphere.hit_distance(ray),
+        }?;
+        Some(SceneHit {
+            hit: object.shape.hit_at(ray, t),
+            object: index,
+        })
+    }
+
     /// The nearest hit among the objects of `among` (see [`Scene::shoot_among`]), with
     /// `distance(index, shape)` giving each one's `t`.
     #[inline]
