@@ -2,33 +2,41 @@
 //!
 //! A 64-bit division is a long library call on every chip fixray targets (the Cortex-M0 has no
 //! divide instruction at all). Both reciprocals here start from a small table built at compile
-//! time from integers and take two Newton steps in 32 × 32 → 64-bit products: [`rsqrt`]
+//! time from integers, interpolated, and take one Newton step in 32 × 32 → 64-bit products:
+//! [`rsqrt`]
 //! normalises a vector with three multiplications, and [`div_q16`] divides Eq. 4.2's numerator
 //! by its denominator with one.
 
 use crate::numbers::fx::{bit_length, top_word, wide_mul_u32};
 
 // The reciprocal square root.
-/// `1/√μ` for `μ = (64 + i + ½)/256`, `i` in 0..192, in Q2.14: the seed of the Newton steps.
+/// `1/√μ` at the knots `μ = (64 + j)/256`, `j` in 0..=192, in Q2.30 (the first, 2, held one
+/// unit below 2³¹ so that a seed always lies below it): the seed of the Newton step,
+/// interpolated between knots.
 ///
 /// Built at compile time from an integer square root, so there is no float anywhere.
-const RSQRT_SEEDS: [u16; 192] = {
-    let mut seeds = [0u16; 192];
-    let mut i = 0;
-    while i < 192 {
-        // 1/√((2i + 129)/512) = √(512/(2i + 129)); in Q2.14: √(512 · 2²⁸ / (2i + 129)).
-        let ratio = (512u64 << 28) / (2 * i as u64 + 129);
-        seeds[i] = ratio.isqrt() as u16;
-        i += 1;
+const RSQRT_KNOTS: [u32; 193] = {
+    let mut knots = [0u32; 193];
+    let mut j = 0;
+    while j < 193 {
+        // 1/√((64 + j)/256) in Q2.30: 2³⁴/√(64 + j) = √(2⁶⁸ / (64 + j)).
+        let root = ((1u128 << 68) / (64 + j as u128)).isqrt();
+        knots[j] = if root > i32::MAX as u128 {
+            i32::MAX as u32
+        } else {
+            root as u32
+        };
+        j += 1;
     }
-    seeds
+    knots
 };
 
 /// `1/√s` for `s ≥ 1`, as `(y, shift)` with `1/√s ≈ y · 2^−(30 + shift)`.
 ///
-/// `s` is scaled by an even power of two into `μ ∈ [¼, 1)` in Q0.32, a 192-entry table gives
-/// `1/√μ` to about 0.4 %, and two Newton steps `y ← y·(3 − μ·y²)/2` bring it to about 2⁻²⁸
-/// relative. `y` lies in `(2³⁰, 2³¹)`. Every product is 32 × 32 → 64 bits.
+/// `s` is scaled by an even power of two into `μ ∈ [¼, 1)` in Q0.32; linear interpolation
+/// between the 193 knots of a table gives `1/√μ` to about 2⁻¹⁵ relative, in 32-bit
+/// arithmetic, and one Newton step `y ← y·(3 − μ·y²)/2` brings it to about 2⁻²⁹. `y` lies
+/// in `(2³⁰, 2³¹)`. The Newton step's three products are 32 × 32 → 64 bits.
 #[must_use]
 pub(crate) const fn rsqrt(s: u64) -> (u32, u32) {
     // 0 has no reciprocal root, and no bit for the table to be indexed by.
@@ -37,16 +45,16 @@ pub(crate) const fn rsqrt(s: u64) -> (u32, u32) {
     let bits = bit_length(s);
     let p = (bits + 1) & !1;
     let m = top_word(s, p);
-    let seed = RSQRT_SEEDS[((m >> 24) - 64) as usize] as u32;
-    let mut y = seed << 16; // Q2.30
-    let mut step = 0;
-    while step < 2 {
-        step += 1;
-        let y2 = (wide_mul_u32(y, y) >> 30) as u32; // Q2.30, ≤ 4.1 · 2³⁰ fits
-        let my2 = (wide_mul_u32(m, y2) >> 32) as u32; // μ·y², near 1 in Q2.30
-        let factor = (3u32 << 30).wrapping_sub(my2); // 3 − μ·y², near 2, in Q2.30
-        y = (wide_mul_u32(y, factor) >> 31) as u32;
-    }
+    // The knot below μ and the next 16 bits of μ past it. The knots fall by less than 2²⁴
+    // from one to the next, so the step, cut to 16 bits, times the fraction fits 32 bits.
+    let j = ((m >> 24) - 64) as usize;
+    let fraction = (m >> 8) & 0xffff;
+    let (below, above) = (RSQRT_KNOTS[j], RSQRT_KNOTS[j + 1]);
+    let mut y = below - ((((below - above) >> 8) * fraction) >> 8); // Q2.30
+    let y2 = (wide_mul_u32(y, y) >> 30) as u32; // Q2.30, below 4 · 2³⁰
+    let my2 = (wide_mul_u32(m, y2) >> 32) as u32; // μ·y², near 1 in Q2.30
+    let factor = (3u32 << 30).wrapping_sub(my2); // 3 − μ·y², near 2, in Q2.30
+    y = (wide_mul_u32(y, factor) >> 31) as u32;
     (
         if y > i32::MAX as u32 {
             i32::MAX as u32
@@ -58,24 +66,31 @@ pub(crate) const fn rsqrt(s: u64) -> (u32, u32) {
 }
 
 // Division by a reciprocal.
-/// `1/δ` for `δ = (128 + i + ½)/256`, `i` in 0..128, in Q1.15: the seed of the Newton steps.
-const RECIPROCAL_SEEDS: [u16; 128] = {
-    let mut seeds = [0u16; 128];
-    let mut i = 0;
-    while i < 128 {
-        // 1/((2i + 257)/512) in Q1.15, rounded.
-        seeds[i] = (((512u64 << 15) + (2 * i as u64 + 257) / 2) / (2 * i as u64 + 257)) as u16;
-        i += 1;
+/// `1/δ` at the knots `δ = (128 + j)/256`, `j` in 0..=128, in Q2.30, rounded (the first, 2,
+/// held one unit below 2³¹): the seed of the Newton step, interpolated between knots.
+const RECIPROCAL_KNOTS: [u32; 129] = {
+    let mut knots = [0u32; 129];
+    let mut j = 0;
+    while j < 129 {
+        // 1/((128 + j)/256) in Q2.30: 2³⁸ / (128 + j).
+        let d = 128 + j as u64;
+        let q = ((1u64 << 38) + d / 2) / d;
+        knots[j] = if q > i32::MAX as u64 {
+            i32::MAX as u32
+        } else {
+            q as u32
+        };
+        j += 1;
     }
-    seeds
+    knots
 };
 
 /// `num · 2¹⁶ / den` for `den > 0` and a quotient below 2³² (`num < den · 2¹⁶`), within one unit plus 2⁻²⁷ of the exact quotient
 /// (a distance of 8192 is off by at most 5 units of 2⁻¹⁶, a distance of 10 by at most one).
 ///
-/// `den` is scaled into `δ ∈ [½, 1)` in Q0.32, a table gives `1/δ` to about 0.4 %, two
-/// Newton steps `y ← y·(2 − δ·y)` bring it to about 2⁻²⁸ (the steps truncate), and `num`'s
-/// top 32 bits are multiplied by it. Every product is 32 × 32 → 64 bits. A 64-bit division is a long library call on every chip fixray targets.
+/// `den` is scaled into `δ ∈ [½, 1)` in Q0.32, linear interpolation between the 129 knots of
+/// a table gives `1/δ` to about 2⁻¹⁵, one Newton step `y ← y·(2 − δ·y)` brings it to about
+/// 2⁻²⁹ (the step truncates), and `num`'s top 32 bits are multiplied by it. Every product is 32 × 32 → 64 bits. A 64-bit division is a long library call on every chip fixray targets.
 #[must_use]
 pub(crate) fn div_q16(num: u64, den: u64) -> u32 {
     // A quotient of 2³² or more would not fit, and its shift below would go negative.
@@ -89,12 +104,15 @@ pub(crate) fn div_q16(num: u64, den: u64) -> u32 {
     }
     let den_bits = bit_length(den); // den < 2^den_bits
     let d = top_word(den, den_bits);
-    let mut y = (RECIPROCAL_SEEDS[((d >> 24) - 128) as usize] as u32) << 15; // 1/δ in Q2.30
-    for _ in 0..2 {
-        let dy = (wide_mul_u32(d, y) >> 32) as u32; // δ·y, near 1, in Q2.30
-        let factor = (2u32 << 30).wrapping_sub(dy); // 2 − δ·y, near 1, in Q2.30
-        y = (wide_mul_u32(y, factor) >> 30) as u32;
-    }
+    // The knot below δ and the next 16 bits of δ past it: as in `rsqrt`, the knots fall by
+    // less than 2²⁴ from one to the next, so the interpolation fits 32 bits.
+    let j = ((d >> 24) - 128) as usize;
+    let fraction = (d >> 8) & 0xffff;
+    let (below, above) = (RECIPROCAL_KNOTS[j], RECIPROCAL_KNOTS[j + 1]);
+    let mut y = below - ((((below - above) >> 8) * fraction) >> 8); // 1/δ in Q2.30
+    let dy = (wide_mul_u32(d, y) >> 32) as u32; // δ·y, near 1, in Q2.30
+    let factor = (2u32 << 30).wrapping_sub(dy); // 2 − δ·y, near 1, in Q2.30
+    y = (wide_mul_u32(y, factor) >> 30) as u32;
     // num ≈ n · 2^k with n its top 32 bits.
     let num_bits = bit_length(num);
     let k = num_bits.saturating_sub(32);
@@ -125,11 +143,11 @@ mod tests {
     }
 
     #[test]
-    fn seeds_are_close_to_the_inverse_root() {
-        for (i, &seed) in RSQRT_SEEDS.iter().enumerate() {
-            let mu = (64.0 + i as f64 + 0.5) / 256.0;
-            let exact = (1.0 / mu.sqrt()) * 16384.0;
-            assert!((seed as f64 - exact).abs() <= 1.0, "{i}: {seed} vs {exact}");
+    fn knots_are_the_inverse_root() {
+        for (j, &knot) in RSQRT_KNOTS.iter().enumerate() {
+            let mu = (64.0 + j as f64) / 256.0;
+            let exact = (1.0 / mu.sqrt()) * 2f64.powi(30);
+            assert!((knot as f64 - exact).abs() <= 1.0, "{j}: {knot} vs {exact}");
         }
     }
 
@@ -146,6 +164,21 @@ mod tests {
         }
         worst = worst.max(relative_error(u64::MAX));
         assert!(worst < 2f64.powi(-27), "worst relative error {worst:e}");
+    }
+
+    #[test]
+    fn accurate_to_two_to_the_minus_29_between_the_knots() {
+        // Every 32-bit mantissa the table can be indexed by is equally likely here, and the
+        // ends of the range are taken whole.
+        let mut rng = crate::xorshift::XorShift(0x1405_7b7e_f767_814f);
+        let mut worst: f64 = 0.0;
+        for _ in 0..1_000_000 {
+            worst = worst.max(relative_error((rng.next() >> 32).max(1 << 30)));
+        }
+        for x in (1u64 << 30..(1 << 30) + 4096).chain((1 << 32) - 4096..1 << 32) {
+            worst = worst.max(relative_error(x));
+        }
+        assert!(worst < 2f64.powi(-29), "worst relative error {worst:e}");
     }
 
     #[test]
