@@ -146,9 +146,7 @@ impl Vec3 {
                 || (self.within_raw((1 << 30) - 1) && o.within_raw((1 << 30) - 1)),
             "dot_wide_exact: neither vector a unit one, nor both inside the overflow budget"
         );
-        fx::wide_mul(self.x.to_bits(), o.x.to_bits())
-            + fx::wide_mul(self.y.to_bits(), o.y.to_bits())
-            + fx::wide_mul(self.z.to_bits(), o.z.to_bits())
+        sparse_mul(self.x, o.x) + sparse_mul(self.y, o.y) + sparse_mul(self.z, o.z)
     }
 
     /// `self − o`, each component saturating: `-` in a `const fn`.
@@ -283,6 +281,18 @@ impl Vec3 {
     #[must_use]
     pub fn normalize_or_zero(self) -> Vec3 {
         self.try_normalize().unwrap_or(Vec3::ZERO)
+    }
+}
+
+/// The exact product of two raw values, as [`fx::wide_mul`]; where a 64-bit product is a
+/// long sequence ([`fx::NO_LONG_MULTIPLY`]), a zero first factor skips it. Floors and walls
+/// have normals with two zero components, and their dot products put the normal first.
+#[inline]
+const fn sparse_mul(a: Fx, b: Fx) -> i64 {
+    if fx::NO_LONG_MULTIPLY && a.to_bits() == 0 {
+        0
+    } else {
+        fx::wide_mul(a.to_bits(), b.to_bits())
     }
 }
 
