@@ -96,7 +96,7 @@ impl Ray {
     /// the same point, for products without a saturation check.
     #[inline]
     pub(crate) fn at_hit(&self, t: Fx) -> Vec3 {
-        self.origin + self.dir.scale_unit(t)
+        self.origin.plus(self.dir.scale_unit(t))
     }
 }
 

@@ -149,7 +149,7 @@ impl Sphere {
     /// The `t` of [`Sphere::intersect`] alone, without the hit point and normal: what the
     /// scene needs to find the nearest object and to test shadow rays.
     pub(crate) fn hit_distance(&self, ray: &Ray) -> Option<Fx> {
-        let to_centre = self.centre - ray.origin;
+        let to_centre = self.centre.minus(ray.origin);
         let t_close = ray.dir.dot_exact(to_centre);
         if t_close < -self.radius {
             return None; // wholly behind the origin
@@ -158,7 +158,11 @@ impl Sphere {
             return None; // every hit would lie beyond t_close − r > FAR
         }
         // x_close − c = t_close·u_r − (c − p_r)
-        let d2 = (ray.dir.scale_unit(t_close) - to_centre).length_squared_wide();
+        let d2 = ray
+            .dir
+            .scale_unit(t_close)
+            .minus(to_centre)
+            .length_squared_wide();
         let r2 = fx::wide_mul(self.radius.to_bits(), self.radius.to_bits()).unsigned_abs();
         if d2 > r2 {
             return None;
@@ -187,11 +191,15 @@ impl Sphere {
     /// no offset. Rounding may take a ray that grazes the surface past it (`d > r`); it then
     /// leaves at its closest approach, and never behind its origin.
     pub(crate) fn exit_distance(&self, ray: &Ray) -> Fx {
-        let to_centre = self.centre - ray.origin;
+        let to_centre = self.centre.minus(ray.origin);
         let t_close = ray.dir.dot_exact(to_centre);
         // The origin lies near the surface, so |t_close| ≤ r + a little and a ≤ r: the sum
         // is far inside FAR and Q16.16.
-        let d2 = (ray.dir.scale_unit(t_close) - to_centre).length_squared_wide();
+        let d2 = ray
+            .dir
+            .scale_unit(t_close)
+            .minus(to_centre)
+            .length_squared_wide();
         let r2 = fx::wide_mul(self.radius.to_bits(), self.radius.to_bits()).unsigned_abs();
         let a = Fx::from_bits(isqrt(r2.saturating_sub(d2)) as i32);
         (t_close + a).max(Fx::ZERO)

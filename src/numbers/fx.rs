@@ -245,24 +245,20 @@ pub(crate) const fn mul_fits(a: Fx, b: Fx) -> Fx {
 
 /// `t · u` rounded to nearest, for a distance `t` and `u` a component of a unit vector.
 ///
-/// Hit distances lie within [`FAR`] and unit components within 1, far inside the bounds
-/// this takes them to (`|t| < 2¹⁴`, `|u| < 2`), where the product fits without a
-/// saturation check; the clamps (one `ssat` each on Cortex-M4) keep a hand-built ray whose
-/// direction is not a unit vector from making it wrap.
+/// Hit distances lie within [`FAR`] (and distances along rays within a few times it), and
+/// a unit vector's components within 1 plus its rounding, far inside the bounds
+/// `|t| < 2¹⁴`, `|u| < 2` within which the product fits without a saturation check. Every
+/// [`Ray`](crate::Ray)'s direction is normalised by its constructor and every distance
+/// comes from the render path's own hit tests, so the bounds hold by construction; debug
+/// builds check them.
 #[inline]
 #[must_use]
 pub(crate) const fn mul_unit(t: Fx, u: Fx) -> Fx {
-    const fn clamp(x: i32, bits: u32) -> i32 {
-        let (low, high) = (-(1 << bits), (1 << bits) - 1);
-        if x < low {
-            low
-        } else if x > high {
-            high
-        } else {
-            x
-        }
-    }
-    let (t, u) = (clamp(t.to_bits(), 30), clamp(u.to_bits(), 17));
+    let (t, u) = (t.to_bits(), u.to_bits());
+    debug_assert!(
+        t >= -(1 << 30) && t < 1 << 30 && u >= -(1 << 17) && u < 1 << 17,
+        "mul_unit: a factor outside its bound"
+    );
     // |t · u| < 2⁴⁷: the rounded quotient by 2¹⁶ fits 32 bits.
     Fx::from_bits(((wide_mul(t, u) + (1 << (FRAC - 1))) >> FRAC) as i32)
 }
@@ -336,12 +332,21 @@ mod tests {
             assert_eq!(mul_fits(a, u.abs()), mul(a, u.abs()));
             assert_eq!(mul_unit(a, u), mul(a, u));
         }
-        // Far outside the bounds: clamped, not wrapped.
+        // At the corners of the bounds the product still fits.
+        let (t, u) = (Fx::from_bits((1 << 30) - 1), Fx::from_bits((1 << 17) - 1));
+        assert_eq!(mul_unit(t, u), mul(t, u));
+        assert_eq!(mul_unit(-t, u), mul(-t, u));
         assert_eq!(
-            mul_unit(Fx::MAX, Fx::MAX),
-            mul(Fx::from_bits((1 << 30) - 1), Fx::from_bits((1 << 17) - 1))
+            mul_unit(Fx::from_bits(-(1 << 30)), -u),
+            mul(Fx::from_bits(-(1 << 30)), -u)
         );
-        assert!(mul_unit(Fx::MIN, Fx::MAX) < Fx::ZERO);
+    }
+
+    #[test]
+    #[cfg(debug_assertions)]
+    #[should_panic(expected = "mul_unit: a factor outside its bound")]
+    fn a_product_outside_the_bounds_is_caught_in_debug_builds() {
+        let _ = mul_unit(Fx::MAX, Fx::ONE);
     }
 
     #[test]

@@ -149,6 +149,28 @@ impl Vec3 {
         sparse_mul(self.x, o.x) + sparse_mul(self.y, o.y) + sparse_mul(self.z, o.z)
     }
 
+    /// `self + o` for the render path's points and offsets, which lie within the overflow
+    /// budget (below 2¹⁵ in magnitude, sums included): no saturation check, which the `+`
+    /// operator makes on every component (debug builds check that none is needed).
+    #[inline]
+    pub(crate) const fn plus(self, o: Vec3) -> Vec3 {
+        const fn add(a: Fx, b: Fx) -> Fx {
+            debug_assert!(a.checked_add(b).is_some(), "Vec3::plus: out of range");
+            Fx::from_bits(a.to_bits().wrapping_add(b.to_bits()))
+        }
+        Vec3::new(add(self.x, o.x), add(self.y, o.y), add(self.z, o.z))
+    }
+
+    /// `self − o`, as [`Vec3::plus`].
+    #[inline]
+    pub(crate) const fn minus(self, o: Vec3) -> Vec3 {
+        const fn sub(a: Fx, b: Fx) -> Fx {
+            debug_assert!(a.checked_sub(b).is_some(), "Vec3::minus: out of range");
+            Fx::from_bits(a.to_bits().wrapping_sub(b.to_bits()))
+        }
+        Vec3::new(sub(self.x, o.x), sub(self.y, o.y), sub(self.z, o.z))
+    }
+
     /// `self − o`, each component saturating: `-` in a `const fn`.
     #[inline]
     pub(crate) const fn saturating_sub(self, o: Vec3) -> Vec3 {
@@ -167,12 +189,20 @@ impl Vec3 {
         within(self.x, bound) && within(self.y, bound) && within(self.z, bound)
     }
 
-    /// [`Vec3::dot_wide_exact`] rounded once to Q16.16 (saturating): the render path's dot
-    /// product, with `dot_wide_exact`'s budget — one side a unit vector, or both within 2¹⁴.
+    /// [`Vec3::dot_wide_exact`] rounded once to Q16.16: the render path's dot product of a
+    /// unit vector `self` (a ray's direction, a surface normal) and a vector within the
+    /// budget (components below 2¹⁴). Its magnitude is then below `√3 · 2¹⁴` and fits
+    /// Q16.16: no saturation check (debug builds check the bounds).
     #[inline]
     #[must_use]
     pub(crate) const fn dot_exact(self, o: Vec3) -> Fx {
-        fx::narrow(self.dot_wide_exact(o))
+        debug_assert!(
+            self.within_raw(1 << 17) && o.within_raw((1 << 30) - 1),
+            "dot_exact: not a unit vector and one within the budget"
+        );
+        let rounded = (self.dot_wide_exact(o) + (1 << (fx::FRAC - 1))) >> fx::FRAC;
+        debug_assert!(rounded as i32 as i64 == rounded, "dot_exact: out of range");
+        Fx::from_bits(rounded as i32)
     }
 
     /// The dot product, formed at 64 bits and rounded once to Q16.16 (saturating).

@@ -240,7 +240,7 @@ fn cast_run(
         let ray = camera.ray_along(towards, square.now(towards));
         let hit = shoot(&ray);
         each(col, col + 1, Some((&ray, hit)));
-        towards = towards + camera.column_step();
+        towards = towards.plus(camera.column_step());
         square.step();
     }
 }

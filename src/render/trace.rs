@@ -276,7 +276,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         let (material, normal) = (&object.material, hit.hit.normal);
         let (mut diffuse, mut specular) = (Fx::ZERO, Fx::ZERO);
         let mut light_up = |index: usize, light: &Light| {
-            let to_light = light.position - hit.hit.point;
+            let to_light = light.position.minus(hit.hit.point);
             let distance_squared = to_light.length_squared_wide();
             let Some(l) = to_light.normalize_with_square(distance_squared) else {
                 return;
