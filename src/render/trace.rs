@@ -327,7 +327,8 @@ impl<const N: usize, const L: usize> Scene<N, L> {
 
     /// Whether anything but object `leaving` lies on `ray` closer than `√distance_squared`
     /// (a Q32.32 value): a shadow ray towards light `light`, which stops at the first
-    /// occluder and skips the spheres outside its [`ShadowCone`].
+    /// occluder, tries only the objects that can shadow object `leaving` from that light
+    /// (`Scene::shadowers`) and skips the spheres outside its [`ShadowCone`].
     pub(crate) fn occluded(
         &self,
         ray: &Ray,
@@ -345,8 +346,19 @@ impl<const N: usize, const L: usize> Scene<N, L> {
             // Not one of the scene's lights: no cones to go by.
             return (self.objects().iter().enumerate()).any(|(i, o)| i != leaving && blocks(o));
         };
-        for (index, (object, cone)) in self.objects().iter().zip(cones).enumerate() {
-            if index != leaving && cone.may_block(ray.dir, distance_squared) && blocks(object) {
+        // Only the objects that can shadow the one the ray leaves (bit `i` for object `i`; in
+        // scenes of more than 32 objects, every one is tried).
+        let objects = self.objects();
+        let shadowers = match self.shadowers().get(light).and_then(|s| s.get(leaving)) {
+            Some(&set) if objects.len() <= 32 => set,
+            _ => !0,
+        };
+        for (index, (object, cone)) in objects.iter().zip(cones).enumerate() {
+            if (shadowers >> (index & 31)) & 1 != 0
+                && index != leaving
+                && cone.may_block(ray.dir, distance_squared)
+                && blocks(object)
+            {
                 return true;
             }
         }

@@ -7,6 +7,7 @@ pub(crate) mod hit;
 pub(crate) mod light;
 pub(crate) mod linear;
 pub(crate) mod material;
+pub(crate) mod shadowers;
 
 pub use background::Background;
 pub use colour::Rgb;
@@ -111,6 +112,9 @@ pub struct Scene<const N: usize, const L: usize = 4> {
     light_count: usize,
     /// `cones[light][object]`: what each light sees of each sphere, to skip shadow tests.
     cones: [[ShadowCone; N]; L],
+    /// `shadowers[light][object]`: the objects a shadow ray towards each light from each
+    /// object may meet (bit `i` for object `i`, below 32).
+    shadowers: [[u32; N]; L],
     ambient: Fx,
     background: Background,
     shadows: bool,
@@ -153,6 +157,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
             lights: [light; L],
             light_count: 0,
             cones: [[ShadowCone::ALWAYS; N]; L],
+            shadowers: [[!0; N]; L],
             ambient,
             background,
             shadows: true,
@@ -208,22 +213,37 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         Ok(index)
     }
 
-    /// Works out again every light's shadow cone of object `index` (which must exist).
+    /// Works out again every light's shadow cone of object `index` (which must exist), and
+    /// which objects can shadow which, since that depends on it.
     const fn refresh_object_cones(&mut self, index: usize) {
         let mut light = 0;
         while light < self.light_count {
             self.cones[light][index] =
                 ShadowCone::new(self.lights[light].position, &self.objects[index].shape);
+            self.refresh_shadowers(light);
             light += 1;
         }
     }
 
-    /// Works out again light `index`'s shadow cone of every object (the light must exist).
+    /// Works out again light `index`'s shadow cone of every object, and which objects can
+    /// shadow which from it (the light must exist).
     const fn refresh_light_cones(&mut self, index: usize) {
         let mut object = 0;
         while object < self.object_count {
             self.cones[index][object] =
                 ShadowCone::new(self.lights[index].position, &self.objects[object].shape);
+            object += 1;
+        }
+        self.refresh_shadowers(index);
+    }
+
+    /// Works out again which objects can shadow each object from light `light`.
+    const fn refresh_shadowers(&mut self, light: usize) {
+        let objects = self.objects.split_at(self.object_count).0;
+        let position = self.lights[light].position;
+        let mut object = 0;
+        while object < objects.len() {
+            self.shadowers[light][object] = shadowers::shadowers(position, object, objects);
             object += 1;
         }
     }
@@ -364,6 +384,12 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// what cannot block them.
     pub(crate) const fn cones(&self) -> &[[ShadowCone; N]; L] {
         &self.cones
+    }
+
+    /// `shadowers[light][object]`: the objects (below 32) a shadow ray towards each light
+    /// from a hit on each object may meet.
+    pub(crate) const fn shadowers(&self) -> &[[u32; N]; L] {
+        &self.shadowers
     }
 }
 

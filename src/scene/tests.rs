@@ -100,3 +100,99 @@ fn shadow_cones_never_skip_an_occluder() {
         "the sample must include shadowed points: {blocked}"
     );
 }
+
+#[test]
+fn only_objects_that_cannot_shadow_a_receiver_are_skipped() {
+    // Random scenes of spheres crowded around a floor and a wall, lit from anywhere (inside
+    // spheres, below the floor, level with them), and shadow rays from points on each object's
+    // surface: the test that tries only the receiver's shadowers (and its cones) must agree
+    // with the one that tries every object.
+    let mut rng = crate::xorshift::XorShift(0x0bad_5eed_f00d_cafe);
+    let mut next = move |range: f64| {
+        let seed = rng.next();
+        ((seed >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0) * range
+    };
+    let (mut blocked, mut skipped) = (0u32, 0u32);
+    for _ in 0..300 {
+        let light = |next: &mut dyn FnMut(f64) -> f64| {
+            Light::new(
+                [
+                    next(12.0) as f32,
+                    next(12.0) as f32 + 4.0,
+                    next(12.0) as f32,
+                ],
+                1.0,
+            )
+            .unwrap()
+        };
+        let mut scene: Scene<10, 2> = Scene::new(light(&mut next), 0.1, Rgb::BLACK).unwrap();
+        scene.add_light(light(&mut next)).unwrap();
+        let floor = Plane::new([0.0, next(2.0) as f32 - 2.0, 0.0], [0.0, 1.0, 0.0]).unwrap();
+        scene.add_plane(floor, Rgb::WHITE).unwrap();
+        let wall = Plane::new([0.0, 0.0, -12.0], [next(0.3) as f32, 0.0, 1.0]).unwrap();
+        scene.add_plane(wall, Rgb::WHITE).unwrap();
+        for _ in 0..8 {
+            let centre = [next(6.0) as f32, next(4.0) as f32, next(6.0) as f32 - 4.0];
+            let ball = Sphere::new(centre, (next(1.0).abs() * 2.5 + 0.2) as f32).unwrap();
+            scene.add_sphere(ball, Rgb::WHITE).unwrap();
+        }
+        for (receiver, object) in scene.objects().iter().enumerate() {
+            for _ in 0..40 {
+                // A point on the surface, as a rounded hit point would be.
+                let point = match object.shape {
+                    Shape::Sphere(ball) => {
+                        let Some(u) = Vec3::new(
+                            Fx::from_num(next(1.0)),
+                            Fx::from_num(next(1.0)),
+                            Fx::from_num(next(1.0)),
+                        )
+                        .try_normalize() else {
+                            continue;
+                        };
+                        ball.centre() + u.scale(ball.radius())
+                    }
+                    Shape::Plane(plane) => {
+                        let (x, y) = (Fx::from_num(next(14.0)), Fx::from_num(next(8.0)));
+                        let along = |p: Vec3| Vec3::new(x, p.y, p.z);
+                        let on = Ray::new(
+                            along(plane.point()) + Vec3::new(Fx::ZERO, y, Fx::ZERO),
+                            -plane.normal(),
+                        )
+                        .ok()
+                        .and_then(|r| {
+                            plane.intersect(&r).or_else(|| {
+                                plane.intersect(&Ray::new(r.origin(), plane.normal()).ok()?)
+                            })
+                        });
+                        let Some(hit) = on else { continue };
+                        hit.point()
+                    }
+                };
+                for light in 0..scene.lights().len() {
+                    let to_light = scene.lights()[light].position - point;
+                    let Some(l) = to_light.try_normalize() else {
+                        continue;
+                    };
+                    let ray = Ray::new_unchecked(point, l);
+                    let d2 = to_light.length_squared_wide();
+                    let every = scene.occluded(&ray, d2, receiver, usize::MAX);
+                    assert_eq!(
+                        scene.occluded(&ray, d2, receiver, light),
+                        every,
+                        "object {receiver} at {point:?}, light {light}"
+                    );
+                    blocked += every as u32;
+                }
+            }
+            skipped += (scene.shadowers()[0][receiver].count_ones() + 1 < 10) as u32;
+        }
+    }
+    assert!(
+        blocked > 5_000,
+        "the sample must include shadowed points: {blocked}"
+    );
+    assert!(
+        skipped > 1_000,
+        "the sets must leave objects out: {skipped}"
+    );
+}
