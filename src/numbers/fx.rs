@@ -150,8 +150,8 @@ pub(crate) const fn top_word(x: u64, p: u32) -> u32 {
 /// The number of bits `x` needs, `64 − x.leading_zeros()` (0 for 0).
 ///
 /// Cortex-M0 and RV32IMC have no count-leading-zeros instruction, and the library call that
-/// stands in for one costs about 35 instructions; three comparisons and a 16-entry table cost
-/// about a dozen. Elsewhere it is the instruction.
+/// stands in for one costs about 35 instructions; two comparisons and a 256-entry table cost
+/// under a dozen. Elsewhere it is the instruction.
 #[inline]
 #[must_use]
 pub(crate) const fn bit_length(x: u64) -> u32 {
@@ -166,11 +166,19 @@ pub(crate) const fn bit_length(x: u64) -> u32 {
     }
 }
 
-/// [`bit_length`] of a 32-bit value by halving the range three times and a table for the
-/// last four bits. Compiled everywhere, so the host tests check it.
+/// [`bit_length`] of a 32-bit value by halving the range twice and a table for the last
+/// eight bits (256 bytes of flash). Compiled everywhere, so the host tests check it.
 #[inline]
 const fn bit_length_u32(mut x: u32) -> u32 {
-    const NIBBLE: [u8; 16] = [0, 1, 2, 2, 3, 3, 3, 3, 4, 4, 4, 4, 4, 4, 4, 4];
+    const BYTE: [u8; 256] = {
+        let mut table = [0u8; 256];
+        let mut i = 1;
+        while i < 256 {
+            table[i] = (32 - (i as u32).leading_zeros()) as u8;
+            i += 1;
+        }
+        table
+    };
     let mut n = 0;
     if x >= 1 << 16 {
         n += 16;
@@ -180,11 +188,7 @@ const fn bit_length_u32(mut x: u32) -> u32 {
         n += 8;
         x >>= 8;
     }
-    if x >= 1 << 4 {
-        n += 4;
-        x >>= 4;
-    }
-    n + NIBBLE[x as usize] as u32
+    n + BYTE[x as usize & 0xff] as u32
 }
 
 /// A Q32.32 raw value rounded (half up) back to Q16.16, saturating at the ends of the range.
