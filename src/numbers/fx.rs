@@ -244,7 +244,25 @@ pub(crate) const fn mul_fits(a: Fx, b: Fx) -> Fx {
         b.to_bits() >= 0 && b.to_bits() <= 1 << FRAC,
         "mul_fits: factor outside 0..=1"
     );
-    Fx::from_bits(((wide_mul(a.to_bits(), b.to_bits()) + (1 << (FRAC - 1))) >> FRAC) as i32)
+    let (a, b) = (a.to_bits(), b.to_bits());
+    Fx::from_bits(if NO_LONG_MULTIPLY {
+        split_mul_fits(a, b)
+    } else {
+        ((a as i64 * b as i64 + (1 << (FRAC - 1))) >> FRAC) as i32
+    })
+}
+
+/// [`mul_fits`] of raw values where a 64-bit product is a long sequence: `b = 2¹⁶` gives `a`
+/// itself, and below it, with `a = a_hi·2¹⁶ + a_lo`, `a·b/2¹⁶ = a_hi·b + a_lo·b/2¹⁶`, only
+/// the second part rounded. `|a_hi·b| < 2³¹` and `a_lo·b + 2¹⁵ < 2³²`: two 32-bit products,
+/// exact. Compiled everywhere, so the host tests check it.
+#[inline]
+const fn split_mul_fits(a: i32, b: i32) -> i32 {
+    if b == 1 << FRAC {
+        return a;
+    }
+    let (high, low) = (a >> FRAC, (a & 0xffff) as u32);
+    high * b + ((low * b as u32 + (1 << (FRAC - 1))) >> FRAC) as i32
 }
 
 /// `t · u` rounded to nearest, for a distance `t` and `u` a component of a unit vector.
@@ -303,6 +321,11 @@ mod tests {
                 assert_eq!(split_mul(a, b), a as i64 * b as i64, "{a} × {b}");
                 let (ua, ub) = (a as u32, b as u32);
                 assert_eq!(split_mul_u32(ua, ub), ua as u64 * ub as u64, "{ua} × {ub}");
+            }
+            // Every factor of 0..=1 for the bounded product: the rounded 64-bit one.
+            for b in (0..=1 << 16).step_by(7).chain([0xffff, 0x8000, 1 << 16]) {
+                let exact = ((a as i64 * b as i64 + (1 << 15)) >> 16) as i32;
+                assert_eq!(split_mul_fits(a, b), exact, "{a} × {b}");
             }
         }
     }
