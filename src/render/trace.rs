@@ -354,9 +354,11 @@ impl<const N: usize, const L: usize> Scene<N, L> {
             _ => !0,
         };
         for (index, (object, cone)) in objects.iter().zip(cones).enumerate() {
+            // The receiver is not in its own set; in a scene past 32 objects it is ruled out
+            // here, before its surface could be taken for a blocker.
             if (shadowers >> (index & 31)) & 1 != 0
-                && index != leaving
                 && cone.may_block(ray.dir, distance_squared)
+                && index != leaving
                 && blocks(object)
             {
                 return true;
