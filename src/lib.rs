@@ -67,7 +67,7 @@
 //!   [`render_row`], [`render`], [`render_row_supersampled`], [`shoot_row`] and
 //!   [`shoot_row_skipping`] walk rows and frames into a [`Framebuffer`] or a row buffer
 //!   ([`FrameHash`] digests them); `accel/` holds every speed-up of that walk ([`RowRays`],
-//!   row culling, runs of columns; and the shadow cones the scene keeps), each bit-identical to tracing the row's
+//!   row culling, runs of columns; and the shadow cones and shadow sets the scene keeps), each bit-identical to tracing the row's
 //!   pixels one by one.
 //!   `changes.rs` bounds the pixels an edit of the scene can change ([`Damage`]) and
 //!   redraws only those ([`render_changes`], [`render_row_span`]), for animations.

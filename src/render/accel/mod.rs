@@ -4,8 +4,9 @@
 //! - `runs`: a row cut into runs of columns that can meet the same objects (culling by the
 //!   row's plane, each sphere's column span, and planes every ray of a run points away from);
 //!
-//! The shadow rays' speed-up, each light's cone around each sphere, is a cache the scene keeps
-//! up to date as objects and lights are added: `scene/cone.rs`.
+//! The shadow rays' speed-ups, each light's cone around each sphere and the set of objects that
+//! can shadow each object from each light, are caches the scene keeps up to date as objects
+//! and lights are added: `scene/cone.rs` and `scene/shadowers.rs`.
 
 pub(crate) mod cull;
 pub(crate) mod row_rays;
