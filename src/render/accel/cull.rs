@@ -72,15 +72,14 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         index: usize,
         eye: &Eye<N>,
     ) -> Option<SceneHit> {
-        let object = self.objects().get(index)?;
-        let t = match object.shape {
-            Shape::Plane(plane) => plane.hit_distance_from(ray, eye.numerator(index)),
-            Shape::Sphere(sphere) => sphere.hit_distance(ray),
-        }?;
-        Some(SceneHit {
-            hit: object.shape.hit_at(ray, t),
-            object: index,
-        })
+        let hit = match self.objects().get(index)?.shape {
+            Shape::Plane(plane) => {
+                let t = plane.hit_distance_from(ray, eye.numerator(index))?;
+                plane.hit_at(ray, t)
+            }
+            Shape::Sphere(sphere) => sphere.hit_at(ray, sphere.hit_distance(ray)?),
+        };
+        Some(SceneHit { hit, object: index })
     }
 
     /// The nearest hit among the objects of `among` (see [`Scene::shoot_among`]), with
