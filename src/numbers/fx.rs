@@ -282,7 +282,28 @@ pub(crate) const fn mul_unit(t: Fx, u: Fx) -> Fx {
         "mul_unit: a factor outside its bound"
     );
     // |t · u| < 2⁴⁷: the rounded quotient by 2¹⁶ fits 32 bits.
-    Fx::from_bits(((wide_mul(t, u) + (1 << (FRAC - 1))) >> FRAC) as i32)
+    Fx::from_bits(if NO_LONG_MULTIPLY {
+        split_mul_unit(t, u)
+    } else {
+        ((t as i64 * u as i64 + (1 << (FRAC - 1))) >> FRAC) as i32
+    })
+}
+
+/// [`mul_unit`] of raw values where a 64-bit product is a long sequence, in three 32-bit
+/// products: with `u = u_hi·2¹⁶ + u_lo` and `t = t_hi·2¹⁶ + t_lo` (`u_lo`, `t_lo` in
+/// 0..2¹⁶), `t·u + 2¹⁵ = 2¹⁶·(t·u_hi + t_hi·u_lo) + t_lo·u_lo + 2¹⁵`, so the rounded quotient
+/// is `t·u_hi + t_hi·u_lo + ⌊(t_lo·u_lo + 2¹⁵)/2¹⁶⌋`. Summed modulo 2³², which gives the
+/// exact value whenever it fits 32 bits, as it does within `mul_unit`'s bounds (only the
+/// corner `t = −2³⁰`, `u = −2¹⁷` would reach 2³¹; no distance or unit vector comes near).
+/// Compiled everywhere, so the host tests check it.
+#[inline]
+const fn split_mul_unit(t: i32, u: i32) -> i32 {
+    let (u_hi, u_lo) = (u >> FRAC, (u & 0xffff) as u32);
+    let (t_hi, t_lo) = (t >> FRAC, (t & 0xffff) as u32);
+    let low = ((t_lo * u_lo + (1 << (FRAC - 1))) >> FRAC) as i32;
+    t.wrapping_mul(u_hi)
+        .wrapping_add(t_hi.wrapping_mul(u_lo as i32))
+        .wrapping_add(low)
 }
 
 #[cfg(test)]
@@ -295,6 +316,11 @@ mod tests {
         let a = Fx::from_bits(3);
         assert_eq!(mul(a, Fx::from_num(0.5)).to_bits(), 2);
         assert_eq!(mul(Fx::from_num(-2.5), Fx::from_num(4)), Fx::from_num(-10));
+    }
+
+    /// A unit component from any raw value: its low 17 bits, signed.
+    fn b_sample(a: i32) -> i32 {
+        (a << 15) >> 15
     }
 
     #[test]
@@ -321,6 +347,15 @@ mod tests {
                 assert_eq!(split_mul(a, b), a as i64 * b as i64, "{a} × {b}");
                 let (ua, ub) = (a as u32, b as u32);
                 assert_eq!(split_mul_u32(ua, ub), ua as u64 * ub as u64, "{ua} × {ub}");
+            }
+            // Distances and unit components within `mul_unit`'s bounds.
+            let t = a >> 2;
+            for u in [0, 1, -1, 0xffff, -0xffff, 1 << 16, -(1 << 16), (1 << 17) - 1, -(1 << 17)]
+                .into_iter()
+                .chain([b_sample(a), -b_sample(a)])
+            {
+                let exact = ((t as i64 * u as i64 + (1 << 15)) >> 16) as i32;
+                assert_eq!(split_mul_unit(t, u), exact, "{t} × {u}");
             }
             // Every factor of 0..=1 for the bounded product: the rounded 64-bit one.
             for b in (0..=1 << 16).step_by(7).chain([0xffff, 0x8000, 1 << 16]) {
