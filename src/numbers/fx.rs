@@ -350,9 +350,19 @@ mod tests {
             }
             // Distances and unit components within `mul_unit`'s bounds.
             let t = a >> 2;
-            for u in [0, 1, -1, 0xffff, -0xffff, 1 << 16, -(1 << 16), (1 << 17) - 1, -(1 << 17)]
-                .into_iter()
-                .chain([b_sample(a), -b_sample(a)])
+            for u in [
+                0,
+                1,
+                -1,
+                0xffff,
+                -0xffff,
+                1 << 16,
+                -(1 << 16),
+                (1 << 17) - 1,
+                -(1 << 17),
+            ]
+            .into_iter()
+            .chain([b_sample(a), -b_sample(a)])
             {
                 let exact = ((t as i64 * u as i64 + (1 << 15)) >> 16) as i32;
                 assert_eq!(split_mul_unit(t, u), exact, "{t} × {u}");

@@ -200,6 +200,9 @@ impl Vec3 {
             self.within_raw(1 << 17) && o.within_raw((1 << 30) - 1),
             "dot_exact: not a unit vector and one within the budget"
         );
+        if fx::NO_LONG_MULTIPLY {
+            return Fx::from_bits(split_dot_unit(self, o));
+        }
         let rounded = (self.dot_wide_exact(o) + (1 << (fx::FRAC - 1))) >> fx::FRAC;
         debug_assert!(rounded as i32 as i64 == rounded, "dot_exact: out of range");
         Fx::from_bits(rounded as i32)
@@ -314,6 +317,30 @@ impl Vec3 {
     }
 }
 
+/// [`Vec3::dot_exact`] of raw values where a 64-bit product is a long sequence, in 32-bit
+/// products: with each `u = u_hi·2¹⁶ + u_lo` and `v = v_hi·2¹⁶ + v_lo` (the low halves in
+/// 0..2¹⁶), `Σ u·v + 2¹⁵ = 2¹⁶·Σ(v·u_hi + v_hi·u_lo) + Σ v_lo·u_lo + 2¹⁵`, and only the last
+/// sum, below 2³⁴, needs 64 bits. The first is summed modulo 2³², exact since the rounded dot
+/// product fits 32 bits (`dot_exact`'s bounds). Compiled everywhere, so the host tests check
+/// it.
+#[inline]
+const fn split_dot_unit(u: Vec3, v: Vec3) -> i32 {
+    const fn parts(u: Fx, v: Fx) -> (i32, u64) {
+        let (u, v) = (u.to_bits(), v.to_bits());
+        let (u_hi, u_lo) = (u >> 16, (u & 0xffff) as u32);
+        let (v_hi, v_lo) = (v >> 16, (v & 0xffff) as u32);
+        let high = v
+            .wrapping_mul(u_hi)
+            .wrapping_add(v_hi.wrapping_mul(u_lo as i32));
+        (high, (v_lo * u_lo) as u64)
+    }
+    let (x, y, z) = (parts(u.x, v.x), parts(u.y, v.y), parts(u.z, v.z));
+    let low = x.1 + y.1 + z.1 + (1 << 15);
+    x.0.wrapping_add(y.0)
+        .wrapping_add(z.0)
+        .wrapping_add((low >> 16) as i32)
+}
+
 /// The exact product of two raw values, as [`fx::wide_mul`]; where a 64-bit product is a
 /// long sequence ([`fx::NO_LONG_MULTIPLY`]), a zero first factor skips it. Floors and walls
 /// have normals with two zero components, and their dot products put the normal first.
@@ -360,6 +387,41 @@ impl Neg for Vec3 {
 
 #[cfg(test)]
 mod tests {
+    #[test]
+    fn the_split_dot_product_of_a_unit_vector_is_exact() {
+        let mut rng = crate::xorshift::XorShift(0x3c6e_f372_fe94_f82b);
+        let mut tested = 0;
+        for i in 0..200_000u32 {
+            let mut next = |bits: u32| ((rng.next() as i64) >> (64 - bits)) as i32;
+            // A unit-sized vector (raw below 2¹⁷) and one within the budget (below 2³⁰),
+            // of every magnitude.
+            let u = Vec3::new(
+                Fx::from_bits(next(18) >> (i % 5)),
+                Fx::from_bits(next(18)),
+                Fx::from_bits(next(18) >> (i % 3)),
+            );
+            let v = Vec3::new(
+                Fx::from_bits(next(31) >> (i % 29)),
+                Fx::from_bits(next(31) >> (i % 17)),
+                Fx::from_bits(next(31)),
+            );
+            let exact: i128 = [(u.x, v.x), (u.y, v.y), (u.z, v.z)]
+                .iter()
+                .map(|(a, b)| a.to_bits() as i128 * b.to_bits() as i128)
+                .sum();
+            let rounded = (exact + (1 << 15)) >> 16;
+            if rounded as i32 as i128 == rounded {
+                assert_eq!(
+                    super::split_dot_unit(u, v) as i128,
+                    rounded,
+                    "{u:?} · {v:?}"
+                );
+                tested += 1;
+            }
+        }
+        assert!(tested > 100_000, "too few cases in range: {tested}");
+    }
+
     use super::*;
 
     fn v(x: f32, y: f32, z: f32) -> Vec3 {
