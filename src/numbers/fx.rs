@@ -245,24 +245,12 @@ pub(crate) const fn mul_fits(a: Fx, b: Fx) -> Fx {
         "mul_fits: factor outside 0..=1"
     );
     let (a, b) = (a.to_bits(), b.to_bits());
+    // The product fits 32 bits, so `split_mul_unit`'s sum modulo 2³² is exact.
     Fx::from_bits(if NO_LONG_MULTIPLY {
-        split_mul_fits(a, b)
+        split_mul_unit(a, b)
     } else {
         ((a as i64 * b as i64 + (1 << (FRAC - 1))) >> FRAC) as i32
     })
-}
-
-/// [`mul_fits`] of raw values where a 64-bit product is a long sequence: `b = 2¹⁶` gives `a`
-/// itself, and below it, with `a = a_hi·2¹⁶ + a_lo`, `a·b/2¹⁶ = a_hi·b + a_lo·b/2¹⁶`, only
-/// the second part rounded. `|a_hi·b| < 2³¹` and `a_lo·b + 2¹⁵ < 2³²`: two 32-bit products,
-/// exact. Compiled everywhere, so the host tests check it.
-#[inline]
-const fn split_mul_fits(a: i32, b: i32) -> i32 {
-    if b == 1 << FRAC {
-        return a;
-    }
-    let (high, low) = (a >> FRAC, (a & 0xffff) as u32);
-    high * b + ((low * b as u32 + (1 << (FRAC - 1))) >> FRAC) as i32
 }
 
 /// `t · u` rounded to nearest, for a distance `t` and `u` a component of a unit vector.
@@ -289,21 +277,29 @@ pub(crate) const fn mul_unit(t: Fx, u: Fx) -> Fx {
     })
 }
 
-/// [`mul_unit`] of raw values where a 64-bit product is a long sequence, in three 32-bit
-/// products: with `u = u_hi·2¹⁶ + u_lo` and `t = t_hi·2¹⁶ + t_lo` (`u_lo`, `t_lo` in
-/// 0..2¹⁶), `t·u + 2¹⁵ = 2¹⁶·(t·u_hi + t_hi·u_lo) + t_lo·u_lo + 2¹⁵`, so the rounded quotient
-/// is `t·u_hi + t_hi·u_lo + ⌊(t_lo·u_lo + 2¹⁵)/2¹⁶⌋`. Summed modulo 2³², which gives the
-/// exact value whenever it fits 32 bits, as it does within `mul_unit`'s bounds (only the
-/// corner `t = −2³⁰`, `u = −2¹⁷` would reach 2³¹; no distance or unit vector comes near).
-/// Compiled everywhere, so the host tests check it.
+/// `t · u` in two parts of 32-bit products, for a factor `u` below 2¹⁷ in magnitude: with
+/// `u = u_hi·2¹⁶ + u_lo` and `t = t_hi·2¹⁶ + t_lo` (`u_lo`, `t_lo` in 0..2¹⁶),
+/// `t·u = 2¹⁶·(t·u_hi + t_hi·u_lo) + t_lo·u_lo`. The first part comes modulo 2³² (exact
+/// whenever what it goes into fits 32 bits), the second, below 2³², exactly.
 #[inline]
-const fn split_mul_unit(t: i32, u: i32) -> i32 {
+pub(crate) const fn split_by_unit(t: i32, u: i32) -> (i32, u32) {
     let (u_hi, u_lo) = (u >> FRAC, (u & 0xffff) as u32);
     let (t_hi, t_lo) = (t >> FRAC, (t & 0xffff) as u32);
-    let low = ((t_lo * u_lo + (1 << (FRAC - 1))) >> FRAC) as i32;
-    t.wrapping_mul(u_hi)
-        .wrapping_add(t_hi.wrapping_mul(u_lo as i32))
-        .wrapping_add(low)
+    let high = t
+        .wrapping_mul(u_hi)
+        .wrapping_add(t_hi.wrapping_mul(u_lo as i32));
+    (high, t_lo * u_lo)
+}
+
+/// `t · u / 2¹⁶` rounded to nearest where a 64-bit product is a long sequence, from
+/// [`split_by_unit`]: `t·u_hi + t_hi·u_lo + ⌊(t_lo·u_lo + 2¹⁵)/2¹⁶⌋` (the low sum stays below
+/// 2³²). Exact whenever the result fits 32 bits: within `mul_unit`'s bounds (only the corner
+/// `t = −2³⁰`, `u = −2¹⁷` would reach 2³¹; no distance or unit vector comes near) and for
+/// `mul_fits`. Compiled everywhere, so the host tests check it.
+#[inline]
+const fn split_mul_unit(t: i32, u: i32) -> i32 {
+    let (high, low) = split_by_unit(t, u);
+    high.wrapping_add(((low + (1 << (FRAC - 1))) >> FRAC) as i32)
 }
 
 #[cfg(test)]
@@ -370,7 +366,7 @@ mod tests {
             // Every factor of 0..=1 for the bounded product: the rounded 64-bit one.
             for b in (0..=1 << 16).step_by(7).chain([0xffff, 0x8000, 1 << 16]) {
                 let exact = ((a as i64 * b as i64 + (1 << 15)) >> 16) as i32;
-                assert_eq!(split_mul_fits(a, b), exact, "{a} × {b}");
+                assert_eq!(split_mul_unit(a, b), exact, "{a} × {b}");
             }
         }
     }

@@ -3,11 +3,32 @@
 //! A 64-bit division is a long library call on every chip fixray targets (the Cortex-M0 has no
 //! divide instruction at all). Both reciprocals here start from a small table built at compile
 //! time from integers, interpolated, and take one Newton step in 32 × 32 → 64-bit products:
-//! [`rsqrt`]
-//! normalises a vector with three multiplications, and [`div_q16`] divides Eq. 4.2's numerator
-//! by its denominator with one.
+//! [`rsqrt`] normalises a vector with three multiplications, and [`div_q16`] divides Eq. 4.2's
+//! numerator by its denominator with one.
 
 use crate::numbers::fx::{bit_length, top_word, wide_mul_u32};
+
+/// A knot of a table in Q2.30, held below 2³¹ (the tables' first knots are 2), so that an
+/// interpolated seed and its square stay within their 32-bit words.
+const fn knot(value: u128) -> u32 {
+    if value > i32::MAX as u128 {
+        i32::MAX as u32
+    } else {
+        value as u32
+    }
+}
+
+/// The seed of a Newton step for `x` in Q0.32, whose top byte is at least `first`: linear
+/// interpolation between `knots[j]` and `knots[j + 1]`, for the knot `j` below `x` and the next
+/// 16 bits of `x` past it. The knots fall by less than 2²⁴ from one to the next, so the step,
+/// cut to 16 bits, times that fraction fits 32 bits.
+#[inline]
+const fn between_knots(knots: &[u32], first: u32, x: u32) -> u32 {
+    let j = ((x >> 24) - first) as usize;
+    let fraction = (x >> 8) & 0xffff;
+    let (below, above) = (knots[j], knots[j + 1]);
+    below - ((((below - above) >> 8) * fraction) >> 8)
+}
 
 // The reciprocal square root.
 /// `1/√μ` at the knots `μ = (64 + j)/256`, `j` in 0..=192, in Q2.30 (the first, 2, held one
@@ -20,12 +41,7 @@ const RSQRT_KNOTS: [u32; 193] = {
     let mut j = 0;
     while j < 193 {
         // 1/√((64 + j)/256) in Q2.30: 2³⁴/√(64 + j) = √(2⁶⁸ / (64 + j)).
-        let root = ((1u128 << 68) / (64 + j as u128)).isqrt();
-        knots[j] = if root > i32::MAX as u128 {
-            i32::MAX as u32
-        } else {
-            root as u32
-        };
+        knots[j] = knot(((1u128 << 68) / (64 + j as u128)).isqrt());
         j += 1;
     }
     knots
@@ -45,12 +61,7 @@ pub(crate) const fn rsqrt(s: u64) -> (u32, u32) {
     let bits = bit_length(s);
     let p = (bits + 1) & !1;
     let m = top_word(s, p);
-    // The knot below μ and the next 16 bits of μ past it. The knots fall by less than 2²⁴
-    // from one to the next, so the step, cut to 16 bits, times the fraction fits 32 bits.
-    let j = ((m >> 24) - 64) as usize;
-    let fraction = (m >> 8) & 0xffff;
-    let (below, above) = (RSQRT_KNOTS[j], RSQRT_KNOTS[j + 1]);
-    let mut y = below - ((((below - above) >> 8) * fraction) >> 8); // Q2.30
+    let mut y = between_knots(&RSQRT_KNOTS, 64, m); // Q2.30
     let y2 = (wide_mul_u32(y, y) >> 30) as u32; // Q2.30, below 4 · 2³⁰
     let my2 = (wide_mul_u32(m, y2) >> 32) as u32; // μ·y², near 1 in Q2.30
     let factor = (3u32 << 30).wrapping_sub(my2); // 3 − μ·y², near 2, in Q2.30
@@ -73,13 +84,8 @@ const RECIPROCAL_KNOTS: [u32; 129] = {
     let mut j = 0;
     while j < 129 {
         // 1/((128 + j)/256) in Q2.30: 2³⁸ / (128 + j).
-        let d = 128 + j as u64;
-        let q = ((1u64 << 38) + d / 2) / d;
-        knots[j] = if q > i32::MAX as u64 {
-            i32::MAX as u32
-        } else {
-            q as u32
-        };
+        let d = 128 + j as u128;
+        knots[j] = knot(((1u128 << 38) + d / 2) / d);
         j += 1;
     }
     knots
@@ -90,7 +96,8 @@ const RECIPROCAL_KNOTS: [u32; 129] = {
 ///
 /// `den` is scaled into `δ ∈ [½, 1)` in Q0.32, linear interpolation between the 129 knots of
 /// a table gives `1/δ` to about 2⁻¹⁵, one Newton step `y ← y·(2 − δ·y)` brings it to about
-/// 2⁻²⁹ (the step truncates), and `num`'s top 32 bits are multiplied by it. Every product is 32 × 32 → 64 bits. A 64-bit division is a long library call on every chip fixray targets.
+/// 2⁻²⁹ (the step truncates), and `num`'s top 32 bits are multiplied by it. Every product is
+/// 32 × 32 → 64 bits.
 #[must_use]
 pub(crate) fn div_q16(num: u64, den: u64) -> u32 {
     // A quotient of 2³² or more would not fit, and its shift below would go negative.
@@ -104,12 +111,7 @@ pub(crate) fn div_q16(num: u64, den: u64) -> u32 {
     }
     let den_bits = bit_length(den); // den < 2^den_bits
     let d = top_word(den, den_bits);
-    // The knot below δ and the next 16 bits of δ past it: as in `rsqrt`, the knots fall by
-    // less than 2²⁴ from one to the next, so the interpolation fits 32 bits.
-    let j = ((d >> 24) - 128) as usize;
-    let fraction = (d >> 8) & 0xffff;
-    let (below, above) = (RECIPROCAL_KNOTS[j], RECIPROCAL_KNOTS[j + 1]);
-    let mut y = below - ((((below - above) >> 8) * fraction) >> 8); // 1/δ in Q2.30
+    let mut y = between_knots(&RECIPROCAL_KNOTS, 128, d); // 1/δ in Q2.30
     let dy = (wide_mul_u32(d, y) >> 32) as u32; // δ·y, near 1, in Q2.30
     let factor = (2u32 << 30).wrapping_sub(dy); // 2 − δ·y, near 1, in Q2.30
     y = (wide_mul_u32(y, factor) >> 30) as u32;

@@ -317,22 +317,16 @@ impl Vec3 {
     }
 }
 
-/// [`Vec3::dot_exact`] of raw values where a 64-bit product is a long sequence, in 32-bit
-/// products: with each `u = u_hi·2¹⁶ + u_lo` and `v = v_hi·2¹⁶ + v_lo` (the low halves in
-/// 0..2¹⁶), `Σ u·v + 2¹⁵ = 2¹⁶·Σ(v·u_hi + v_hi·u_lo) + Σ v_lo·u_lo + 2¹⁵`, and only the last
-/// sum, below 2³⁴, needs 64 bits. The first is summed modulo 2³², exact since the rounded dot
-/// product fits 32 bits (`dot_exact`'s bounds). Compiled everywhere, so the host tests check
-/// it.
+/// [`Vec3::dot_exact`] of raw values where a 64-bit product is a long sequence: each product
+/// of a unit component in two parts ([`fx::split_by_unit`]), `Σ u·v + 2¹⁵ = 2¹⁶·Σ high +
+/// Σ low + 2¹⁵`, and only the low sum, below 2³⁴, needs 64 bits. The high parts are summed
+/// modulo 2³², exact since the rounded dot product fits 32 bits (`dot_exact`'s bounds).
+/// Compiled everywhere, so the host tests check it.
 #[inline]
 const fn split_dot_unit(u: Vec3, v: Vec3) -> i32 {
     const fn parts(u: Fx, v: Fx) -> (i32, u64) {
-        let (u, v) = (u.to_bits(), v.to_bits());
-        let (u_hi, u_lo) = (u >> 16, (u & 0xffff) as u32);
-        let (v_hi, v_lo) = (v >> 16, (v & 0xffff) as u32);
-        let high = v
-            .wrapping_mul(u_hi)
-            .wrapping_add(v_hi.wrapping_mul(u_lo as i32));
-        (high, (v_lo * u_lo) as u64)
+        let (high, low) = fx::split_by_unit(v.to_bits(), u.to_bits());
+        (high, low as u64)
     }
     let (x, y, z) = (parts(u.x, v.x), parts(u.y, v.y), parts(u.z, v.z));
     let low = x.1 + y.1 + z.1 + (1 << 15);
@@ -387,6 +381,8 @@ impl Neg for Vec3 {
 
 #[cfg(test)]
 mod tests {
+    use super::*;
+
     #[test]
     fn the_split_dot_product_of_a_unit_vector_is_exact() {
         let mut rng = crate::xorshift::XorShift(0x3c6e_f372_fe94_f82b);
@@ -421,8 +417,6 @@ mod tests {
         }
         assert!(tested > 100_000, "too few cases in range: {tested}");
     }
-
-    use super::*;
 
     fn v(x: f32, y: f32, z: f32) -> Vec3 {
         Vec3::new(Fx::from_num(x), Fx::from_num(y), Fx::from_num(z))
