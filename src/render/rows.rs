@@ -49,10 +49,11 @@ pub fn render_row<const N: usize, const L: usize>(
         row,
         0..camera.cols(),
         sky.is_some(),
-        |first, end, cast| match cast {
+        |first, end, cast, shadowers| match cast {
             Some((ray, hit)) => {
                 if let Some(pixel) = out.get_mut(first as usize) {
-                    *pixel = crate::scene::linear::to_rgb(scene.radiance(ray, hit));
+                    let light = scene.radiance_among(ray, hit, shadowers);
+                    *pixel = crate::scene::linear::to_rgb(light);
                 }
             }
             None => {
@@ -85,12 +86,13 @@ pub(crate) fn render_columns<const N: usize, const L: usize>(
         row,
         cols,
         sky.is_some(),
-        |first, end, cast| {
+        |first, end, cast, shadowers| {
             let (first, end) = ((first - offset) as usize, (end - offset) as usize);
             match cast {
                 Some((ray, hit)) => {
                     if let Some(pixel) = out.get_mut(first) {
-                        *pixel = crate::scene::linear::to_rgb(scene.radiance(ray, hit));
+                        let light = scene.radiance_among(ray, hit, shadowers);
+                        *pixel = crate::scene::linear::to_rgb(light);
                     }
                 }
                 None => {
@@ -140,7 +142,7 @@ pub fn shoot_row<const N: usize, const L: usize>(
         row,
         0..camera.cols(),
         false,
-        |col, _, cast| {
+        |col, _, cast, _| {
             if let Some((ray, hit)) = cast {
                 each(col.into(), ray, hit);
             }
@@ -179,7 +181,7 @@ pub fn shoot_row_skipping<const N: usize, const L: usize>(
         row,
         0..camera.cols(),
         true,
-        |first, end, cast| match cast {
+        |first, end, cast, _| match cast {
             Some((ray, hit)) => each(first.into(), ray, hit),
             None => empty(first.into()..end.into()),
         },
@@ -189,20 +191,26 @@ pub fn shoot_row_skipping<const N: usize, const L: usize>(
 
 /// The engine of [`shoot_row`] and [`render_row`]: the row's runs ([`Runs`]), and in each the
 /// rays, by column steps ([`Camera::row_rays`]), shot at the run's objects; each is handed to
-/// `each(col, col + 1, Some((ray, hit)))`. Only columns `cols` are cast.
+/// `each(col, col + 1, Some((ray, hit)), shadowers)`, with `shadowers[i]` the objects that
+/// may shadow the row's plane hits from light `i` (see `Runs::shadowers`). Only columns
+/// `cols` are cast.
 ///
 /// With `skip_empty`, a run in which no object can be hit is handed over whole and without
-/// rays, as `each(first, end, None)`: `render_row` paints a plain sky so, which needs no ray.
+/// rays, as `each(first, end, None, shadowers)`: `render_row` paints a plain sky so, which
+/// needs no ray.
 fn cast_row<const N: usize, const L: usize>(
     scene: &Scene<N, L>,
     camera: &Camera,
     row: u16,
     cols: Range<u16>,
     skip_empty: bool,
-    mut each: impl FnMut(u16, u16, Option<(&Ray, Option<SceneHit>)>),
+    mut each: impl FnMut(u16, u16, Option<(&Ray, Option<SceneHit>)>, &[u32; L]),
 ) {
     let mut runs = Runs::new(scene, camera, row);
     runs.limit(cols);
+    let shadowers = *runs.shadowers();
+    let mut each =
+        |first, end, cast: Option<(&Ray, Option<SceneHit>)>| each(first, end, cast, &shadowers);
     while let Some((first, end, here)) = runs.next_run() {
         if here == 0 && skip_empty {
             each(first, end, None);

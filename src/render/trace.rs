@@ -10,6 +10,7 @@ use crate::geometry::ray::Ray;
 use crate::geometry::refract::{refract, schlick};
 use crate::numbers::fx::{self, Fx};
 use crate::numbers::vec3::Vec3;
+use crate::scene::cone::ShadowCone;
 use crate::scene::hit::SceneHit;
 use crate::scene::light::Light;
 use crate::scene::linear::{Linear, channel_to_linear, powi};
@@ -91,11 +92,23 @@ impl<const N: usize, const L: usize> Scene<N, L> {
 
     /// The light arriving along `ray`, whose first hit is `hit`, in linear units.
     pub(crate) fn radiance(&self, ray: &Ray, hit: Option<SceneHit>) -> Linear {
+        self.radiance_among(ray, hit, &[!0; L])
+    }
+
+    /// [`Scene::radiance`] where a first hit on a plane need only try objects of
+    /// `plane_shadowers[light]` (bit `i` for object `i`) for its shadow rays: the same light,
+    /// given sets that hold every object which can shadow the hit (`accel/shadow_rows.rs`).
+    pub(crate) fn radiance_among(
+        &self,
+        ray: &Ray,
+        hit: Option<SceneHit>,
+        plane_shadowers: &[u32; L],
+    ) -> Linear {
         let Some((h, object)) = hit.and_then(|h| Some((h, self.objects().get(h.object)?))) else {
             return self.background().along(ray.dir);
         };
         // The first surface has weight 1: its light is the sum so far, exactly.
-        let light = self.local(object, &h, ray.dir);
+        let light = self.local(object, &h, ray.dir, plane_shadowers);
         if object.material.reflect == Fx::ZERO && object.material.refraction.is_none() {
             return light;
         }
@@ -131,7 +144,8 @@ impl<const N: usize, const L: usize> Scene<N, L> {
                 Start::Off(_) => None,
             };
             let exiting = self.exits(&h, within);
-            add(&mut sum, next.weight, self.local(object, &h, next.ray.dir));
+            let light = self.local(object, &h, next.ray.dir, &[!0; L]);
+            add(&mut sum, next.weight, light);
             self.branch(
                 &mut sum,
                 &mut waiting,
@@ -271,9 +285,17 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     }
 
     /// The surface's own light at a hit: ambient and diffuse times its colour, plus white
-    /// highlights, from every light whose shadow ray reaches it.
-    fn local(&self, object: &Object, hit: &SceneHit, dir: Vec3) -> Linear {
+    /// highlights, from every light whose shadow ray reaches it. On a plane, a shadow ray
+    /// towards light `i` tries only the objects of `plane_shadowers[i]`.
+    fn local(
+        &self,
+        object: &Object,
+        hit: &SceneHit,
+        dir: Vec3,
+        plane_shadowers: &[u32; L],
+    ) -> Linear {
         let (material, normal) = (&object.material, hit.hit.normal);
+        let on_plane = matches!(object.shape, Shape::Plane(_));
         let (mut diffuse, mut specular) = (Fx::ZERO, Fx::ZERO);
         let mut light_up = |index: usize, light: &Light| {
             let to_light = light.position.minus(hit.hit.point);
@@ -287,7 +309,11 @@ impl<const N: usize, const L: usize> Scene<N, L> {
             }
             if self.shadows() {
                 let shadow_ray = Ray::new_unchecked(hit.hit.point, l);
-                if self.occluded(&shadow_ray, distance_squared, hit.object, index) {
+                let among = match plane_shadowers.get(index) {
+                    Some(&set) if on_plane => set,
+                    _ => !0,
+                };
+                if self.occluded(&shadow_ray, distance_squared, hit.object, index, among) {
                     return;
                 }
             }
@@ -328,13 +354,16 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// Whether anything but object `leaving` lies on `ray` closer than `√distance_squared`
     /// (a Q32.32 value): a shadow ray towards light `light`, which stops at the first
     /// occluder, tries only the objects that can shadow object `leaving` from that light
-    /// (`Scene::shadowers`) and skips the spheres outside its [`ShadowCone`].
+    /// (`Scene::shadowers`) and are in `among` (bit `i` for object `i`, which must hold every
+    /// object that can block the ray in scenes of up to 32 objects), and skips the spheres
+    /// outside its [`ShadowCone`].
     pub(crate) fn occluded(
         &self,
         ray: &Ray,
         distance_squared: u64,
         leaving: usize,
         light: usize,
+        among: u32,
     ) -> bool {
         let blocks = |object: &Object| {
             object.shape.hit_distance(ray).is_some_and(|t| {
@@ -349,19 +378,33 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         // Only the objects that can shadow the one the ray leaves (bit `i` for object `i`; in
         // scenes of more than 32 objects, every one is tried).
         let objects = self.objects();
-        let shadowers = match self.shadowers().get(light).and_then(|s| s.get(leaving)) {
-            Some(&set) if objects.len() <= 32 => set,
-            _ => !0,
+        let may_block = |index: usize, object: &Object, cone: &ShadowCone| {
+            cone.may_block(ray.dir, distance_squared) && index != leaving && blocks(object)
         };
-        for (index, (object, cone)) in objects.iter().zip(cones).enumerate() {
-            // The receiver is not in its own set; in a scene past 32 objects it is ruled out
-            // here, before its surface could be taken for a blocker.
-            if (shadowers >> (index & 31)) & 1 != 0
-                && cone.may_block(ray.dir, distance_squared)
-                && index != leaving
-                && blocks(object)
-            {
-                return true;
+        let set = self.shadowers().get(light).and_then(|s| s.get(leaving));
+        match set {
+            // Only the objects that can shadow the one the ray leaves (bit `i` for object
+            // `i`), most often none or one: walked by their bits.
+            Some(&set) if objects.len() <= 32 => {
+                let mut rest = set & among;
+                while rest != 0 {
+                    let index = rest.trailing_zeros() as usize;
+                    rest &= rest - 1;
+                    if let (Some(object), Some(cone)) = (objects.get(index), cones.get(index))
+                        && may_block(index, object, cone)
+                    {
+                        return true;
+                    }
+                }
+            }
+            // In scenes of more than 32 objects every one is tried; the receiver is ruled out
+            // before its surface could be taken for a blocker.
+            _ => {
+                for (index, (object, cone)) in objects.iter().zip(cones).enumerate() {
+                    if may_block(index, object, cone) {
+                        return true;
+                    }
+                }
             }
         }
         false

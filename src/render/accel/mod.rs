@@ -3,6 +3,7 @@
 //! - `row_rays`: a row's rays by exact column steps, their squared lengths carried along;
 //! - `runs`: a row cut into runs of columns that can meet the same objects (culling by the
 //!   row's plane, each sphere's column span, and planes every ray of a run points away from);
+//! - `shadow_rows`: the spheres that can shadow a row's hits on planes, from each light;
 //!
 //! The shadow rays' speed-ups, each light's cone around each sphere and the set of objects that
 //! can shadow each object from each light, are caches the scene keeps up to date as objects
@@ -11,3 +12,4 @@
 pub(crate) mod cull;
 pub(crate) mod row_rays;
 pub(crate) mod runs;
+pub(crate) mod shadow_rows;

@@ -4,6 +4,7 @@
 use crate::geometry::shape::Shape;
 use crate::numbers::vec3::Vec3;
 use crate::render::accel::cull::Eye;
+use crate::render::accel::shadow_rows::row_shadowers;
 use crate::render::camera::Camera;
 use crate::scene::Scene;
 
@@ -25,6 +26,8 @@ pub(crate) struct Runs<'a, const N: usize, const L: usize> {
     /// Planes, and what their hit tests share for rays from the eye.
     planes: u64,
     eye: Eye<N>,
+    /// For each light, the objects that may shadow the row's hits on planes.
+    shadowers: [u32; L],
     /// The unnormalised direction towards column 0, and one column's step.
     start: Vec3,
     step: Vec3,
@@ -47,6 +50,7 @@ impl<'a, const N: usize, const L: usize> Runs<'a, N, L> {
             bounded: 0,
             spans: [(0, 0); 64],
             planes: 0,
+            shadowers: [!0; L],
             eye: Eye::new(scene, camera.eye()),
             start: camera.row_start(row),
             step: camera.column_step(),
@@ -65,7 +69,14 @@ impl<'a, const N: usize, const L: usize> Runs<'a, N, L> {
                 Shape::Sphere(_) => {}
             }
         }
+        runs.shadowers = row_shadowers(scene, camera, row, runs.planes & among);
         runs
+    }
+
+    /// For each light, the objects that may shadow a hit of the row on a plane (see
+    /// `shadow_rows`); a hit on a sphere may be shadowed by any of its own set.
+    pub(crate) const fn shadowers(&self) -> &[u32; L] {
+        &self.shadowers
     }
 
     /// Limits the walk to columns `cols` (clipped to the row): started and stopped there it

@@ -1,0 +1,318 @@
+//! Which spheres can shadow a display row's hits on planes: a shadow ray from such a hit
+//! tries no other sphere.
+//!
+//! The hits of a row on a plane lie, up to rounding, on one line: where the plane meets the
+//! plane through the eye that holds the row's rays. Seen from a light, that line spans one
+//! plane through the light, `Π`, and every shadow ray from those hits runs, up to rounding, in
+//! `Π`. A sphere farther from `Π` than its radius casts no shadow anywhere on the row's line,
+//! so the row's plane hits need not test it. On the demo's ground most rows lie in the shadow
+//! of one sphere or none, where every plane hit would otherwise test the cones of all four.
+//!
+//! The test is worked out once a row in Q16.16, a few products and two divisions a light, with
+//! margins wider than every rounding of the render path and of the set-up itself; where a
+//! margin cannot be bounded (a light near the plane, a row whose plane grazes it) nothing is
+//! ruled out. Shadow rays only ever skip spheres they cannot meet, so the picture is bit for
+//! bit the plain path's.
+
+use crate::geometry::plane::Plane;
+use crate::geometry::shape::Shape;
+use crate::numbers::fx::{FAR, Fx};
+use crate::numbers::vec3::Vec3;
+use crate::render::camera::Camera;
+use crate::scene::Scene;
+
+/// How far a hit point may lie off its plane: the documented 2⁻¹⁰, plus 2⁻¹² for the
+/// rounding of the light's height above the plane.
+const OFF_PLANE: Fx = Fx::from_bits((1 << 6) + (1 << 4));
+
+/// How far, as an angle, a row's ray may stray from the row's plane as `Camera`
+/// rounds that plane's normal: the ray's unit direction is within 2⁻¹⁵ of exact, the normal
+/// within 2⁻¹⁴; 2⁻¹² leaves room.
+const OFF_ROW_SHIFT: u32 = 12;
+
+/// One unit of 2⁻¹⁶ per component of a rounded unit vector: within 2⁻¹⁵ of exact.
+const ROUNDED_DIRECTION: Fx = Fx::from_bits(2);
+
+/// For each light, the objects (bit `i` for object `i`) that may shadow a hit of display row
+/// `row` on one of the planes `planes` (bit `i` for object `i`): every object but the spheres
+/// that lie too far from the row's `Π` for each of those planes. `!0` where nothing is ruled
+/// out: shadows off, no plane, or more than 32 objects (the shadow sets' limit).
+pub(crate) fn row_shadowers<const N: usize, const L: usize>(
+    scene: &Scene<N, L>,
+    camera: &Camera,
+    row: u16,
+    planes: u64,
+) -> [u32; L] {
+    let mut sets = [!0u32; L];
+    let objects = scene.objects();
+    if !scene.shadows() || planes == 0 || objects.len() > 32 {
+        return sets;
+    }
+    let Some(row_normal) = camera.row_plane_normal(row) else {
+        return sets;
+    };
+    for (set, light) in sets.iter_mut().zip(scene.lights()) {
+        // A sphere is ruled out only where every plane of the row rules it out.
+        let mut ruled_out = !0u32;
+        let mut rest = planes;
+        while rest != 0 && ruled_out != 0 {
+            let index = rest.trailing_zeros() as usize;
+            rest &= rest - 1;
+            ruled_out &= match objects.get(index).map(|o| o.shape) {
+                Some(Shape::Plane(plane)) => {
+                    far_from_row(scene, &plane, row_normal, camera.eye(), light.position())
+                        .unwrap_or(0)
+                }
+                _ => 0,
+            };
+        }
+        *set = !ruled_out;
+    }
+    sets
+}
+
+/// The spheres (bit `i` for object `i`) that cannot shadow any hit of the row whose plane
+/// has the unit normal `row_normal` on `plane` from a light at `light`, or `None` where the
+/// margins cannot be bounded.
+fn far_from_row<const N: usize, const L: usize>(
+    scene: &Scene<N, L>,
+    plane: &Plane,
+    row_normal: Vec3,
+    eye: Vec3,
+    light: Vec3,
+) -> Option<u32> {
+    let normal = plane.normal();
+    // The light's height above the plane: shadow rays from it are at least `reach` long.
+    // Lights, eyes and planes' points lie within ±LIMIT: no difference here saturates.
+    let height = normal.dot(light - plane.point());
+    let reach = height.abs() - OFF_PLANE;
+    // The sine of the angle between the plane and the row's plane, less its rounding.
+    let sin_row = row_normal.cross(normal).length() - Fx::from_bits(1 << 3);
+    if reach < Fx::from_bits(1 << 14) || sin_row < Fx::from_bits(1 << 10) {
+        return None; // a light within ¼ of the plane, or a row's plane within 1/64 of it
+    }
+    // Π's normal: the plane of the pencil through the row's line on `plane` that holds the
+    // light, `height · m − (m·(light − eye)) · n`. Its rounding, from `m`'s 2⁻¹⁴ and the
+    // products', is below `error`.
+    let to_light = light - eye;
+    let across = row_normal.dot(to_light);
+    let pi = row_normal.scale(height) - normal.scale(across);
+    let error = Fx::from_bits(((height.abs().to_bits() as i64 + l1(to_light)) >> 14) as i32 + 12);
+    let size = pi.length();
+    let pi = pi.try_normalize()?;
+    // A hit lies within OFF_PLANE of `plane` and within `t / 2¹²` of the row's plane, `t` its
+    // distance from the eye: within `(OFF_PLANE + t / 2¹²) / sin_row` of their line, which
+    // lies in Π. Seen from the light, at least `reach` away, with `t` at most `reach` plus
+    // `|light − eye|` more than that, the direction to the hit is off Π by at most `off`; Π's
+    // rounded normal, by `tilt`.
+    let from_eye = to_light.length();
+    let off = (OFF_PLANE + ((reach + from_eye) >> OFF_ROW_SHIFT))
+        .checked_div(reach.saturating_mul(sin_row))?;
+    let tilt = (error * 2).checked_div(size)? + ROUNDED_DIRECTION;
+    let angle = off.saturating_add(tilt);
+    if angle >= Fx::ONE {
+        return None;
+    }
+    let mut ruled_out = 0u32;
+    for (index, object) in scene.objects().iter().enumerate().take(32) {
+        let Shape::Sphere(sphere) = object.shape else {
+            continue;
+        };
+        let radius = sphere.radius();
+        // The sphere as a shadow ray may meet it: its test's rounding, as `shadowers.rs`
+        // allows for it (√r/32 ≤ (r + 1)/64), and the ray's rounded direction, off the
+        // exact one by 2⁻¹⁵ over at most FAR + r, which the test's closest point lies within.
+        let wide: Fx =
+            radius + ((radius + Fx::ONE) >> 6) + Fx::from_bits(1 << 8) + ((FAR + radius) >> 15);
+        let to_centre = sphere.centre() - light;
+        // At least the distance to the centre; within ±2048 · 3.
+        let distance = Fx::from_bits(l1(to_centre) as i32);
+        // The shadow ray passes within `wide` of the centre at a point at most
+        // `distance + wide` from the light, which is within `(distance + wide) · angle` of Π.
+        let limit = wide
+            .saturating_add((distance + wide).saturating_mul(angle))
+            .saturating_add(Fx::from_bits(1 << 8));
+        if pi.dot(to_centre).abs() > limit {
+            ruled_out |= 1 << index;
+        }
+    }
+    Some(ruled_out)
+}
+
+/// `|x| + |y| + |z|` in raw units.
+fn l1(v: Vec3) -> i64 {
+    v.x.to_bits().unsigned_abs() as i64
+        + v.y.to_bits().unsigned_abs() as i64
+        + v.z.to_bits().unsigned_abs() as i64
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geometry::ray::Ray;
+    use crate::geometry::sphere::Sphere;
+    use crate::scene::colour::Rgb;
+    use crate::scene::light::Light;
+    use crate::{Size, demo};
+
+    #[test]
+    fn the_demo_rows_away_from_the_shadows_test_no_sphere() {
+        let (scene, camera) = (demo::scene(), demo::camera(160, 128).unwrap());
+        let spheres = 0b11110;
+        // The bottom rows see the ground in front of every ball and its shadow.
+        for row in 104..128 {
+            let sets = row_shadowers(&scene, &camera, row, 1);
+            assert_eq!(sets[0] & spheres, 0, "row {row}");
+        }
+        // Across the middle, the rows where the plain path finds the ground shadowed keep the
+        // spheres that shadow it; most others keep none.
+        let mut empty = 0;
+        for row in 0..104 {
+            let set = row_shadowers(&scene, &camera, row, 1)[0];
+            empty += (set & spheres == 0) as u32;
+            for col in 0..160 {
+                let ray = camera.ray(col, row.into());
+                let Some(hit) = scene.shoot(&ray).filter(|hit| hit.object == 0) else {
+                    continue;
+                };
+                let to_light = scene.lights()[0].position - hit.hit.point;
+                let d2 = to_light.length_squared_wide();
+                let shadow = Ray::new_unchecked(hit.hit.point, to_light.try_normalize().unwrap());
+                for ball in 1..5 {
+                    let only = 1 << ball;
+                    if scene.occluded(&shadow, d2, 0, 0, only) {
+                        assert_ne!(set & only, 0, "row {row}, column {col}, ball {ball}");
+                    }
+                }
+            }
+        }
+        assert!(empty >= 64, "{empty} of 104 rows test no sphere");
+    }
+
+    #[test]
+    fn nothing_is_ruled_out_without_shadows_or_past_32_objects() {
+        let (mut scene, camera) = (demo::scene(), demo::camera(160, 128).unwrap());
+        assert_ne!(row_shadowers(&scene, &camera, 120, 1), [!0; 4]);
+        scene.set_shadows(false);
+        assert_eq!(row_shadowers(&scene, &camera, 120, 1), [!0; 4]);
+        // Shadow sets hold 32 objects: a 33rd leaves every row's set whole.
+        let light = Light::new([0.0, 20.0, 0.0], 1.0).unwrap();
+        let mut crowd: Scene<33, 1> = Scene::new(light, 0.1, Rgb::BLACK).unwrap();
+        let floor = Plane::new([0.0, -4.0, 0.0], [0.0, 1.0, 0.0]).unwrap();
+        crowd.add_plane(floor, Rgb::WHITE).unwrap();
+        for i in 0..32 {
+            let ball = Sphere::new([i as f32 - 16.0, 0.0, -40.0], 0.4).unwrap();
+            crowd.add_sphere(ball, Rgb::WHITE).unwrap();
+            let set = row_shadowers(&crowd, &camera, 127, 1)[0];
+            assert_eq!(set == !0, i == 31, "{} objects", i + 2);
+        }
+    }
+
+    /// Random worlds: a floor (level or tilted), a wall, eight spheres, one or two lights
+    /// anywhere above the floor (some close to it), cameras looking anywhere with any field of
+    /// view. For every pixel whose first hit is a plane, a sphere that its row rules out must
+    /// not block the shadow ray that `Scene::local` would send to any light.
+    #[test]
+    fn a_sphere_ruled_out_never_blocks_a_shadow_ray_of_the_row() {
+        let mut rng = crate::xorshift::XorShift(0x05ee_d0f5_ad00_0001);
+        let mut next = move |range: f64| {
+            let seed = rng.next();
+            ((seed >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0) * range
+        };
+        let (mut tried, mut ruled_out, mut blocked) = (0u64, 0u64, 0u64);
+        for world in 0..120 {
+            let light = |next: &mut dyn FnMut(f64) -> f64| {
+                let height = if world % 4 == 0 {
+                    next(0.6).abs()
+                } else {
+                    next(12.0).abs()
+                };
+                Light::new(
+                    [
+                        next(12.0) as f32,
+                        (height - 1.7) as f32,
+                        next(12.0) as f32 - 6.0,
+                    ],
+                    0.8,
+                )
+                .unwrap()
+            };
+            let mut scene: Scene<11, 2> = Scene::new(light(&mut next), 0.1, Rgb::BLACK).unwrap();
+            if world % 2 == 0 {
+                scene.add_light(light(&mut next)).unwrap();
+            }
+            let tilt = if world % 3 == 0 {
+                next(0.4) as f32
+            } else {
+                0.0
+            };
+            let floor = Plane::new([0.0, -2.0, 0.0], [tilt, 1.0, next(0.2) as f32 * tilt]).unwrap();
+            scene.add_plane(floor, Rgb::WHITE).unwrap();
+            let wall = Plane::new([0.0, 0.0, -20.0], [next(0.5) as f32, 0.0, 1.0]).unwrap();
+            scene.add_plane(wall, Rgb::WHITE).unwrap();
+            for _ in 0..8 {
+                let centre = [next(8.0) as f32, next(3.0) as f32, next(8.0) as f32 - 8.0];
+                let ball = Sphere::new(centre, (next(1.0).abs() * 2.0 + 0.1) as f32).unwrap();
+                scene.add_sphere(ball, Rgb::WHITE).unwrap();
+            }
+            let eye = [
+                next(10.0) as f32,
+                next(6.0) as f32 + 3.0,
+                next(6.0) as f32 + 8.0,
+            ];
+            let target = [
+                next(6.0) as f32,
+                next(3.0) as f32 - 2.0,
+                next(6.0) as f32 - 8.0,
+            ];
+            let Ok(camera) = Camera::look_at(eye, target)
+                .fov_degrees((next(1.0).abs() * 120.0 + 10.0) as f32)
+                .size(Size::new(48, 36))
+                .build()
+            else {
+                continue;
+            };
+            let planes = 0b11;
+            for row in 0..camera.rows() {
+                let sets = row_shadowers(&scene, &camera, row, planes);
+                for col in 0..camera.cols() {
+                    let ray = camera.ray(col.into(), row.into());
+                    let Some(hit) = scene.shoot(&ray) else {
+                        continue;
+                    };
+                    if hit.object > 1 {
+                        continue; // a sphere: its shadow rays try its whole set
+                    }
+                    let point = hit.hit.point;
+                    for (light, set) in scene.lights().iter().zip(sets) {
+                        let to_light = light.position - point;
+                        let d2 = to_light.length_squared_wide();
+                        let Some(l) = to_light.normalize_with_square(d2) else {
+                            continue;
+                        };
+                        let shadow = Ray::new_unchecked(point, l);
+                        for (index, object) in scene.objects().iter().enumerate().skip(2) {
+                            let blocks = object.shape.hit_distance(&shadow).is_some_and(|t| {
+                                let t = t.to_bits() as u32;
+                                crate::numbers::fx::wide_mul_u32(t, t) < d2
+                            });
+                            tried += 1;
+                            blocked += blocks as u64;
+                            if set & (1 << index) == 0 {
+                                ruled_out += 1;
+                                assert!(
+                                    !blocks,
+                                    "world {world}, row {row}, column {col}: object {index} \
+                                     shadows {point:?} but was ruled out"
+                                );
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        // The sample holds shadows, and the rows rule out most spheres.
+        assert!(blocked > 20_000, "shadowed: {blocked} of {tried}");
+        assert!(ruled_out * 2 > tried, "ruled out {ruled_out} of {tried}");
+    }
+}
