@@ -31,13 +31,19 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     #[doc(hidden)]
     #[must_use]
     pub fn seen_from_row(&self, camera: &crate::Camera, row: u16) -> u64 {
-        let Some(normal) = camera.row_plane_normal(row) else {
+        self.seen_from_row_plane(camera.eye(), camera.row_plane_normal(row))
+    }
+
+    /// [`Scene::seen_from_row`] given the row's plane's unit normal `normal`
+    /// (`Camera::row_plane_normal`), which `None` leaves every object in.
+    pub(crate) fn seen_from_row_plane(&self, eye: Vec3, normal: Option<Vec3>) -> u64 {
+        let Some(normal) = normal else {
             return !0;
         };
         let mut among = !0u64;
         for (index, object) in self.objects().iter().enumerate().take(64) {
             if let Shape::Sphere(sphere) = object.shape
-                && !near_row_plane(&sphere, camera.eye(), normal)
+                && !near_row_plane(&sphere, eye, normal)
             {
                 among &= !(1 << index);
             }

@@ -43,7 +43,8 @@ impl<'a, const N: usize, const L: usize> Runs<'a, N, L> {
         // for empty while they exist, and object 63 is simply tried with them.
         let own_bits = if scene.objects().len() > 64 { 63 } else { 64 };
         let beyond = if own_bits == 63 { 1 << 63 } else { 0 };
-        let among = scene.seen_from_row(camera, row) & scene.present() | beyond;
+        let row_normal = camera.row_plane_normal(row);
+        let among = scene.seen_from_row_plane(camera.eye(), row_normal) & scene.present() | beyond;
         let mut runs = Runs {
             scene,
             among,
@@ -69,7 +70,9 @@ impl<'a, const N: usize, const L: usize> Runs<'a, N, L> {
                 Shape::Sphere(_) => {}
             }
         }
-        runs.shadowers = row_shadowers(scene, camera, row, runs.planes & among);
+        if let Some(row_normal) = row_normal {
+            runs.shadowers = row_shadowers(scene, camera.eye(), row_normal, runs.planes & among);
+        }
         runs
     }
 

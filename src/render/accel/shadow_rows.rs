@@ -17,8 +17,8 @@
 use crate::geometry::plane::Plane;
 use crate::geometry::shape::Shape;
 use crate::numbers::fx::{FAR, Fx};
+use crate::numbers::reciprocal::div_q16;
 use crate::numbers::vec3::Vec3;
-use crate::render::camera::Camera;
 use crate::scene::Scene;
 
 /// How far a hit point may lie off its plane: the documented 2⁻¹⁰, plus 2⁻¹² for the
@@ -33,14 +33,15 @@ const OFF_ROW_SHIFT: u32 = 12;
 /// One unit of 2⁻¹⁶ per component of a rounded unit vector: within 2⁻¹⁵ of exact.
 const ROUNDED_DIRECTION: Fx = Fx::from_bits(2);
 
-/// For each light, the objects (bit `i` for object `i`) that may shadow a hit of display row
-/// `row` on one of the planes `planes` (bit `i` for object `i`): every object but the spheres
-/// that lie too far from the row's `Π` for each of those planes. `!0` where nothing is ruled
-/// out: shadows off, no plane, or more than 32 objects (the shadow sets' limit).
+/// For each light, the objects (bit `i` for object `i`) that may shadow a hit on one of the
+/// planes `planes` (bit `i` for object `i`) of the display row whose plane through the eye at
+/// `eye` has the unit normal `row_normal` (`Camera::row_plane_normal`): every object but the
+/// spheres that lie too far from the row's `Π` for each of those planes. `!0` where nothing
+/// is ruled out: shadows off, no plane, or more than 32 objects (the shadow sets' limit).
 pub(crate) fn row_shadowers<const N: usize, const L: usize>(
     scene: &Scene<N, L>,
-    camera: &Camera,
-    row: u16,
+    eye: Vec3,
+    row_normal: Vec3,
     planes: u64,
 ) -> [u32; L] {
     let mut sets = [!0u32; L];
@@ -48,9 +49,6 @@ pub(crate) fn row_shadowers<const N: usize, const L: usize>(
     if !scene.shadows() || planes == 0 || objects.len() > 32 {
         return sets;
     }
-    let Some(row_normal) = camera.row_plane_normal(row) else {
-        return sets;
-    };
     for (set, light) in sets.iter_mut().zip(scene.lights()) {
         // A sphere is ruled out only where every plane of the row rules it out.
         let mut ruled_out = !0u32;
@@ -60,8 +58,7 @@ pub(crate) fn row_shadowers<const N: usize, const L: usize>(
             rest &= rest - 1;
             ruled_out &= match objects.get(index).map(|o| o.shape) {
                 Some(Shape::Plane(plane)) => {
-                    far_from_row(scene, &plane, row_normal, camera.eye(), light.position())
-                        .unwrap_or(0)
+                    far_from_row(scene, &plane, row_normal, eye, light.position()).unwrap_or(0)
                 }
                 _ => 0,
             };
@@ -106,9 +103,11 @@ fn far_from_row<const N: usize, const L: usize>(
     // `|light − eye|` more than that, the direction to the hit is off Π by at most `off`; Π's
     // rounded normal, by `tilt`.
     let from_eye = to_light.length();
-    let off = (OFF_PLANE + ((reach + from_eye) >> OFF_ROW_SHIFT))
-        .checked_div(reach.saturating_mul(sin_row))?;
-    let tilt = (error * 2).checked_div(size)? + ROUNDED_DIRECTION;
+    let off = quotient(
+        OFF_PLANE + ((reach + from_eye) >> OFF_ROW_SHIFT),
+        reach.saturating_mul(sin_row),
+    )?;
+    let tilt = quotient(error * 2, size)? + ROUNDED_DIRECTION;
     let angle = off.saturating_add(tilt);
     if angle >= Fx::ONE {
         return None;
@@ -139,6 +138,16 @@ fn far_from_row<const N: usize, const L: usize>(
     Some(ruled_out)
 }
 
+/// `num / den` for positive `den`, rounded up by a unit (the reciprocal's rounding), or `None`
+/// from 1 up: an angle that wide rules nothing out.
+fn quotient(num: Fx, den: Fx) -> Option<Fx> {
+    let (num, den) = (num.to_bits(), den.to_bits());
+    if num < 0 || den <= 0 || num >= den {
+        return None;
+    }
+    Some(Fx::from_bits(div_q16(num as u64, den as u64) as i32 + 1))
+}
+
 /// `|x| + |y| + |z|` in raw units.
 fn l1(v: Vec3) -> i64 {
     v.x.to_bits().unsigned_abs() as i64
@@ -153,7 +162,18 @@ mod tests {
     use crate::geometry::sphere::Sphere;
     use crate::scene::colour::Rgb;
     use crate::scene::light::Light;
-    use crate::{Size, demo};
+    use crate::{Camera, Size, demo};
+
+    /// The sets of display row `row`.
+    fn sets_of_row<const N: usize, const L: usize>(
+        scene: &Scene<N, L>,
+        camera: &Camera,
+        row: u16,
+        planes: u64,
+    ) -> [u32; L] {
+        let normal = camera.row_plane_normal(row).unwrap();
+        row_shadowers(scene, camera.eye(), normal, planes)
+    }
 
     #[test]
     fn the_demo_rows_away_from_the_shadows_test_no_sphere() {
@@ -161,14 +181,14 @@ mod tests {
         let spheres = 0b11110;
         // The bottom rows see the ground in front of every ball and its shadow.
         for row in 104..128 {
-            let sets = row_shadowers(&scene, &camera, row, 1);
+            let sets = sets_of_row(&scene, &camera, row, 1);
             assert_eq!(sets[0] & spheres, 0, "row {row}");
         }
         // Across the middle, the rows where the plain path finds the ground shadowed keep the
         // spheres that shadow it; most others keep none.
         let mut empty = 0;
         for row in 0..104 {
-            let set = row_shadowers(&scene, &camera, row, 1)[0];
+            let set = sets_of_row(&scene, &camera, row, 1)[0];
             empty += (set & spheres == 0) as u32;
             for col in 0..160 {
                 let ray = camera.ray(col, row.into());
@@ -192,9 +212,9 @@ mod tests {
     #[test]
     fn nothing_is_ruled_out_without_shadows_or_past_32_objects() {
         let (mut scene, camera) = (demo::scene(), demo::camera(160, 128).unwrap());
-        assert_ne!(row_shadowers(&scene, &camera, 120, 1), [!0; 4]);
+        assert_ne!(sets_of_row(&scene, &camera, 120, 1), [!0; 4]);
         scene.set_shadows(false);
-        assert_eq!(row_shadowers(&scene, &camera, 120, 1), [!0; 4]);
+        assert_eq!(sets_of_row(&scene, &camera, 120, 1), [!0; 4]);
         // Shadow sets hold 32 objects: a 33rd leaves every row's set whole.
         let light = Light::new([0.0, 20.0, 0.0], 1.0).unwrap();
         let mut crowd: Scene<33, 1> = Scene::new(light, 0.1, Rgb::BLACK).unwrap();
@@ -203,7 +223,7 @@ mod tests {
         for i in 0..32 {
             let ball = Sphere::new([i as f32 - 16.0, 0.0, -40.0], 0.4).unwrap();
             crowd.add_sphere(ball, Rgb::WHITE).unwrap();
-            let set = row_shadowers(&crowd, &camera, 127, 1)[0];
+            let set = sets_of_row(&crowd, &camera, 127, 1)[0];
             assert_eq!(set == !0, i == 31, "{} objects", i + 2);
         }
     }
@@ -274,7 +294,7 @@ mod tests {
             };
             let planes = 0b11;
             for row in 0..camera.rows() {
-                let sets = row_shadowers(&scene, &camera, row, planes);
+                let sets = sets_of_row(&scene, &camera, row, planes);
                 for col in 0..camera.cols() {
                     let ray = camera.ray(col.into(), row.into());
                     let Some(hit) = scene.shoot(&ray) else {
