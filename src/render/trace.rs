@@ -340,15 +340,15 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         let k = self
             .ambient()
             .saturating_add(fx::mul(material.diffuse, diffuse));
-        let highlight = if specular > Fx::ZERO {
-            fx::mul(material.specular, specular)
-        } else {
-            Fx::ZERO
-        };
         let colour = object.colour_at(hit.hit.point);
         // A channel is at most 1: its product with k needs no saturation.
-        let channel = |c: u8| fx::mul_fits(k, channel_to_linear(c)).saturating_add(highlight);
-        [channel(colour.r), channel(colour.g), channel(colour.b)]
+        let lit = |c: u8| fx::mul_fits(k, channel_to_linear(c));
+        let lit = [lit(colour.r), lit(colour.g), lit(colour.b)];
+        if specular <= Fx::ZERO {
+            return lit; // matte, or no highlight here: nothing to add
+        }
+        let highlight = fx::mul(material.specular, specular);
+        lit.map(|c| c.saturating_add(highlight))
     }
 
     /// Whether anything but object `leaving` lies on `ray` closer than `√distance_squared`
