@@ -82,6 +82,22 @@ const fn split_mul_u32(a: u32, b: u32) -> u64 {
     (((a_hi * b_hi) as u64) << 32) + (middle << 16) + (a_lo * b_lo) as u64
 }
 
+/// `⌊a · b / 2³²⌋`, the high word of [`split_mul`]'s product, in 32-bit operations: with the
+/// middle products `m = m_hi·2¹⁶ + m_lo` split again, the sum below the high word,
+/// `m1_lo + m2_lo + ⌊lo/2¹⁶⌋`, is below 3·2¹⁶, and only its carry reaches the high word. On
+/// the Cortex-M0 the 64-bit shift and sums of the whole product are most of its cost.
+/// Compiled everywhere, so the host tests check it.
+#[inline]
+const fn split_mul_high(a: i32, b: i32) -> i32 {
+    let (a_lo, a_hi) = (a & 0xFFFF, a >> 16);
+    let (b_lo, b_hi) = (b & 0xFFFF, b >> 16);
+    // |a_hi|, |b_hi| ≤ 2¹⁵ and the low halves below 2¹⁶: each product fits its type.
+    let (m1, m2) = (a_hi * b_lo, a_lo * b_hi);
+    let low = (a_lo as u32 * b_lo as u32) >> 16;
+    let carry = ((m1 & 0xFFFF) as u32 + (m2 & 0xFFFF) as u32 + low) >> 16;
+    a_hi * b_hi + (m1 >> 16) + (m2 >> 16) + carry as i32
+}
+
 /// `(a · b) / 2^shift` rounded half up, for `1 ≤ shift ≤ 63`: the scaling step of
 /// normalisation and of the sphere's normal, exact.
 ///
@@ -92,7 +108,6 @@ const fn split_mul_u32(a: u32, b: u32) -> u64 {
 #[inline]
 #[must_use]
 pub(crate) const fn mul_shift_round(a: i32, b: i32, shift: u32) -> i64 {
-    let wide = wide_mul(a, b);
     // The one product whose high word is 2³⁰ is i32::MIN², and a shift of 63 rounds with 2³⁰:
     // that sum alone would not fit. Callers multiply by a positive reciprocal (below 2³¹).
     debug_assert!(
@@ -100,15 +115,19 @@ pub(crate) const fn mul_shift_round(a: i32, b: i32, shift: u32) -> i64 {
         "mul_shift_round: shift outside 1..=63"
     );
     debug_assert!(
-        !(shift == 63 && wide == 1 << 62),
+        !(shift == 63 && a == i32::MIN && b == i32::MIN),
         "mul_shift_round: i32::MIN² shifted by 63"
     );
     if shift >= 33 {
         // |high| ≤ 2³⁰, and so is the rounding term; both reach it only in the case above.
-        let high = (wide >> 32) as i32;
+        let high = if NO_LONG_MULTIPLY {
+            split_mul_high(a, b)
+        } else {
+            (wide_mul(a, b) >> 32) as i32
+        };
         ((high + (1 << (shift - 33))) >> (shift - 32)) as i64
     } else {
-        (wide + (1 << (shift - 1))) >> shift
+        (wide_mul(a, b) + (1 << (shift - 1))) >> shift
     }
 }
 
@@ -341,6 +360,8 @@ mod tests {
         for &a in &values {
             for &b in &values {
                 assert_eq!(split_mul(a, b), a as i64 * b as i64, "{a} × {b}");
+                let high = ((a as i64 * b as i64) >> 32) as i32;
+                assert_eq!(split_mul_high(a, b), high, "{a} × {b}");
                 let (ua, ub) = (a as u32, b as u32);
                 assert_eq!(split_mul_u32(ua, ub), ua as u64 * ub as u64, "{ua} × {ub}");
             }
