@@ -5,7 +5,7 @@ use crate::error::{Error, Quantity};
 use crate::geometry::hit::Hit;
 use crate::geometry::ray::Ray;
 use crate::numbers::fx::{FAR, Fx};
-use crate::numbers::reciprocal::div_q16;
+use crate::numbers::reciprocal::Dividend;
 use crate::numbers::vec3::Vec3;
 
 /// An infinite plane through a point `p0` with unit normal `n`.
@@ -178,19 +178,24 @@ impl Plane {
 
     /// The `t` of [`Plane::intersect`] alone, without the hit's normal.
     pub(crate) fn hit_distance(&self, ray: &Ray) -> Option<Fx> {
-        self.hit_distance_from(ray, self.numerator(ray.origin))
+        self.hit_distance_from(ray, &self.numerator(ray.origin))
     }
 
     /// `−n·(p_r − p0)`, the numerator of Eq. 4.2, exactly in Q32.32: it depends on the
     /// ray's origin alone, so rays that share one (a camera's) can share it.
-    pub(crate) fn numerator(&self, origin: Vec3) -> i64 {
-        -self.normal.dot_wide_exact(origin - self.point)
+    pub(crate) fn numerator(&self, origin: Vec3) -> Numerator {
+        let value = -self.normal.dot_wide_exact(origin - self.point);
+        Numerator {
+            value,
+            dividend: Dividend::new(value.unsigned_abs()),
+        }
     }
 
     /// [`Plane::hit_distance`] given `num`, which must be `self.numerator(ray.origin)`.
-    pub(crate) fn hit_distance_from(&self, ray: &Ray, num: i64) -> Option<Fx> {
+    pub(crate) fn hit_distance_from(&self, ray: &Ray, num: &Numerator) -> Option<Fx> {
         // Both are exact Q32.32 values.
         let den = self.normal.dot_wide_exact(ray.dir);
+        let (dividend, num) = (num.dividend, num.value);
         // Parallel, the plane behind the origin, or the origin on the plane: a ray that starts
         // on a plane leaves it (or runs along it) and meets it nowhere else.
         if den == 0 || num == 0 || (num < 0) != (den < 0) {
@@ -202,7 +207,7 @@ impl Plane {
             return None;
         }
         // t ≤ 2¹³: the quotient fits, within a unit of 2⁻¹⁶ of the exact one.
-        let t = Fx::from_bits(div_q16(num, den) as i32);
+        let t = Fx::from_bits(dividend.over(den) as i32);
         if let Some([min, max]) = self.bounds {
             let [u, v] = self.coords(ray.at(t));
             if u < min[0] || u > max[0] || v < min[1] || v > max[1] {
@@ -216,6 +221,23 @@ impl Plane {
     pub(crate) fn hit_at(&self, ray: &Ray, t: Fx) -> Hit {
         Hit::facing(t, ray.at_hit(t), self.normal, ray.dir)
     }
+}
+
+/// A plane's numerator of Eq. 4.2 for rays from one origin ([`Plane::numerator`]), with its
+/// magnitude made ready for division by each ray's denominator.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct Numerator {
+    /// `−n·(p_r − p0)` in Q32.32.
+    pub(crate) value: i64,
+    dividend: Dividend,
+}
+
+impl Numerator {
+    /// For objects that are not planes.
+    pub(crate) const NONE: Numerator = Numerator {
+        value: 0,
+        dividend: Dividend::new(0),
+    };
 }
 
 #[cfg(test)]

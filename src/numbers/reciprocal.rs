@@ -100,37 +100,67 @@ const RECIPROCAL_KNOTS: [u32; 129] = {
 /// 32 × 32 → 64 bits.
 #[must_use]
 pub(crate) fn div_q16(num: u64, den: u64) -> u32 {
-    // A quotient of 2³² or more would not fit, and its shift below would go negative.
-    debug_assert!(den > 0, "div_q16: zero divisor");
-    debug_assert!(
-        (num as u128) < (den as u128) << 16,
-        "div_q16: the quotient does not fit 32 bits"
-    );
     if num == 0 {
         return 0;
     }
-    let den_bits = bit_length(den); // den < 2^den_bits
-    let d = top_word(den, den_bits);
-    let mut y = between_knots(&RECIPROCAL_KNOTS, 128, d); // 1/δ in Q2.30
-    let dy = (wide_mul_u32(d, y) >> 32) as u32; // δ·y, near 1, in Q2.30
-    let factor = (2u32 << 30).wrapping_sub(dy); // 2 − δ·y, near 1, in Q2.30
-    y = (wide_mul_u32(y, factor) >> 30) as u32;
-    // num ≈ n · 2^k with n its top 32 bits.
-    let num_bits = bit_length(num);
-    let k = num_bits.saturating_sub(32);
-    let n = top_word(num, num_bits.max(32));
-    // num·2¹⁶/den = n · 2^k · 2¹⁶ · y · 2⁻³⁰ / 2^den_bits
-    let shift = 14 + den_bits - k;
-    let q = wide_mul_u32(n, y);
-    if shift >= 64 {
-        return 0;
+    Dividend::new(num).over(den)
+}
+
+/// A dividend of [`div_q16`], split once into its top 32 bits and the power of two below
+/// them, for a run of divisions by different divisors (a plane's numerator of Eq. 4.2, the
+/// same for every ray from the eye).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct Dividend {
+    /// The dividend is `top · 2^below`, to `top`'s 32 bits.
+    top: u32,
+    below: u32,
+    /// The dividend itself, for the checks of debug builds.
+    #[cfg(debug_assertions)]
+    num: u64,
+}
+
+impl Dividend {
+    /// `num` split.
+    #[inline]
+    pub(crate) const fn new(num: u64) -> Self {
+        let bits = bit_length(num);
+        Dividend {
+            top: top_word(num, if bits > 32 { bits } else { 32 }),
+            below: bits.saturating_sub(32),
+            #[cfg(debug_assertions)]
+            num,
+        }
     }
-    if shift >= 33 {
-        // `fx::mul_shift_round`'s high-word rounding, unsigned: q < 2⁶³ may reach 2³¹ in its
-        // high word, which the signed step would overflow; the sum fits a u32.
-        return (((q >> 32) as u32) + (1 << (shift - 33))) >> (shift - 32);
+
+    /// [`div_q16`]`(num, den)` for this dividend `num`, which must not be 0.
+    #[inline]
+    pub(crate) fn over(self, den: u64) -> u32 {
+        // A quotient of 2³² or more would not fit, and its shift below would go negative.
+        debug_assert!(den > 0, "div_q16: zero divisor");
+        #[cfg(debug_assertions)]
+        debug_assert!(
+            self.num > 0 && (self.num as u128) < (den as u128) << 16,
+            "div_q16: the quotient does not fit 32 bits"
+        );
+        let den_bits = bit_length(den); // den < 2^den_bits
+        let d = top_word(den, den_bits);
+        let mut y = between_knots(&RECIPROCAL_KNOTS, 128, d); // 1/δ in Q2.30
+        let dy = (wide_mul_u32(d, y) >> 32) as u32; // δ·y, near 1, in Q2.30
+        let factor = (2u32 << 30).wrapping_sub(dy); // 2 − δ·y, near 1, in Q2.30
+        y = (wide_mul_u32(y, factor) >> 30) as u32;
+        // num ≈ n · 2^k with n its top 32 bits: num·2¹⁶/den = n · 2^k · 2¹⁶ · y · 2⁻³⁰ / 2^den_bits
+        let shift = 14 + den_bits - self.below;
+        let q = wide_mul_u32(self.top, y);
+        if shift >= 64 {
+            return 0;
+        }
+        if shift >= 33 {
+            // `fx::mul_shift_round`'s high-word rounding, unsigned: q < 2⁶³ may reach 2³¹ in its
+            // high word, which the signed step would overflow; the sum fits a u32.
+            return (((q >> 32) as u32) + (1 << (shift - 33))) >> (shift - 32);
+        }
+        ((q + (1 << (shift - 1))) >> shift) as u32
     }
-    ((q + (1 << (shift - 1))) >> shift) as u32
 }
 
 #[cfg(test)]

@@ -1,6 +1,7 @@
 //! Which objects a row of rays, or a ray from the eye, can meet: the culling behind
 //! `render_row`'s runs, and what rays from one point share.
 
+use crate::geometry::plane::Numerator;
 use crate::geometry::ray::Ray;
 use crate::geometry::shape::Shape;
 use crate::geometry::sphere::Sphere;
@@ -128,13 +129,13 @@ impl<const N: usize, const L: usize> Scene<N, L> {
 /// plane's numerator of Eq. 4.2 ([`Plane`]'s `t = −n·(p_r − p0) / (n·u_r)` has `p_r` only in
 /// its numerator).
 pub(crate) struct Eye<const N: usize> {
-    numerators: [i64; N],
+    numerators: [Numerator; N],
 }
 
 impl<const N: usize> Eye<N> {
     /// The shared terms of rays from `origin` into `scene`.
     pub(crate) fn new<const L: usize>(scene: &Scene<N, L>, origin: Vec3) -> Self {
-        let mut numerators = [0; N];
+        let mut numerators = [Numerator::NONE; N];
         for (num, object) in numerators.iter_mut().zip(scene.objects()) {
             if let Shape::Plane(plane) = object.shape {
                 *num = plane.numerator(origin);
@@ -144,8 +145,8 @@ impl<const N: usize> Eye<N> {
     }
 
     /// Plane `index`'s numerator of Eq. 4.2 for rays from the eye (0 for anything else).
-    pub(crate) fn numerator(&self, index: usize) -> i64 {
-        self.numerators.get(index).copied().unwrap_or(0)
+    pub(crate) fn numerator(&self, index: usize) -> &Numerator {
+        self.numerators.get(index).unwrap_or(&Numerator::NONE)
     }
 }
 

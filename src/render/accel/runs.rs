@@ -131,7 +131,7 @@ impl<'a, const N: usize, const L: usize> Runs<'a, N, L> {
                 planes &= planes - 1;
                 if let Some(object) = self.scene.objects().get(index)
                     && let Shape::Plane(plane) = object.shape
-                    && misses_all(plane.normal(), self.eye.numerator(index), first, last)
+                    && misses_all(plane.normal(), self.eye.numerator(index).value, first, last)
                 {
                     here &= !(1 << index);
                 }
