@@ -221,6 +221,22 @@ impl Plane {
     pub(crate) fn hit_at(&self, ray: &Ray, t: Fx) -> Hit {
         Hit::facing(t, ray.at_hit(t), self.normal, ray.dir)
     }
+
+    /// [`Plane::hit_at`] for the `t` that [`Plane::hit_distance_from`] found with `num`: the
+    /// ray met the plane, so `n·u_r` has the numerator's sign, and the normal is turned
+    /// exactly when that is positive. The same hit, without the product.
+    pub(crate) fn hit_at_from(&self, ray: &Ray, t: Fx, num: &Numerator) -> Hit {
+        let normal = if num.value > 0 {
+            -self.normal
+        } else {
+            self.normal
+        };
+        Hit {
+            t,
+            point: ray.at_hit(t),
+            normal,
+        }
+    }
 }
 
 /// A plane's numerator of Eq. 4.2 for rays from one origin ([`Plane::numerator`]), with its

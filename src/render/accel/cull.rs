@@ -81,8 +81,9 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     ) -> Option<SceneHit> {
         let hit = match self.objects().get(index)?.shape {
             Shape::Plane(plane) => {
-                let t = plane.hit_distance_from(ray, eye.numerator(index))?;
-                plane.hit_at(ray, t)
+                let num = eye.numerator(index);
+                let t = plane.hit_distance_from(ray, num)?;
+                plane.hit_at_from(ray, t, num)
             }
             Shape::Sphere(sphere) => sphere.hit_at(ray, sphere.hit_distance(ray)?),
         };
