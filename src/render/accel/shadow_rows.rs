@@ -38,6 +38,8 @@ const ROUNDED_DIRECTION: Fx = Fx::from_bits(2);
 /// `eye` has the unit normal `row_normal` (`Camera::row_plane_normal`): every object but the
 /// spheres that lie too far from the row's `Π` for each of those planes. `!0` where nothing
 /// is ruled out: shadows off, no plane, or more than 32 objects (the shadow sets' limit).
+// Once a row, and a few hundred bytes of code: not copied into each caller.
+#[inline(never)]
 pub(crate) fn row_shadowers<const N: usize, const L: usize>(
     scene: &Scene<N, L>,
     eye: Vec3,
