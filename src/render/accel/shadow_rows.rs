@@ -186,12 +186,12 @@ mod tests {
             let sets = sets_of_row(&scene, &camera, row, 1);
             assert_eq!(sets[0] & spheres, 0, "row {row}");
         }
-        // Across the middle, the rows where the plain path finds the ground shadowed keep the
-        // spheres that shadow it; most others keep none.
-        let mut empty = 0;
+        // Above them, the rows where the plain path finds the ground shadowed keep the spheres
+        // that shadow it, and in all they keep few.
+        let mut kept = 0;
         for row in 0..104 {
             let set = sets_of_row(&scene, &camera, row, 1)[0];
-            empty += (set & spheres == 0) as u32;
+            kept += (set & spheres).count_ones();
             for col in 0..160 {
                 let ray = camera.ray(col, row.into());
                 let Some(hit) = scene.shoot(&ray).filter(|hit| hit.object == 0) else {
@@ -208,7 +208,8 @@ mod tests {
                 }
             }
         }
-        assert!(empty >= 64, "{empty} of 104 rows test no sphere");
+        // Rows 64 to 103 see the floor: 160 spheres in all without the sets, 66 with them.
+        assert!(kept <= 80, "rows 0 to 103 keep {kept} spheres");
     }
 
     #[test]
