@@ -329,10 +329,13 @@ impl Checker {
     /// The colour of the square at plane coordinates `uv`.
     #[must_use]
     pub fn colour_at(&self, even: Rgb, uv: [Fx; 2]) -> Rgb {
-        // Positive, as its constructor checked; `max` keeps the division visibly safe.
-        let size = (self.size.to_bits() as i64).max(1);
-        let index = |c: Fx| (c.to_bits() as i64).div_euclid(size);
-        if (index(uv[0]) + index(uv[1])) & 1 == 0 {
+        // Positive, as its constructor checked; `max` keeps the division visibly safe. A
+        // positive divisor cannot overflow a 32-bit division, which every chip fixray targets
+        // does in hardware or in a short routine (a 64-bit one is a long call), and the sum's
+        // parity survives wrapping.
+        let size = self.size.to_bits().max(1);
+        let index = |c: Fx| c.to_bits().div_euclid(size);
+        if index(uv[0]).wrapping_add(index(uv[1])) & 1 == 0 {
             even
         } else {
             self.other
