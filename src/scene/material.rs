@@ -342,3 +342,56 @@ impl Checker {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn checker_squares_are_those_of_the_exact_floor_division() {
+        // Any side a checker takes (2⁻¹⁶ to 1024) and any coordinate, signs and ends included.
+        let (even, odd) = (Rgb::WHITE, Rgb::BLACK);
+        let mut rng = crate::xorshift::XorShift(0x00c4_ec4e_75a1_2e00);
+        let mut sizes = [
+            1,
+            2,
+            3,
+            0xFFFF,
+            1 << 16,
+            1 << 17,
+            3 << 15,
+            (1 << 26) - 1,
+            1 << 26,
+        ]
+        .to_vec();
+        let mut coordinates = [0, 1, -1, i32::MIN, i32::MAX, 1 << 17, -(1 << 17)].to_vec();
+        for _ in 0..200 {
+            let seed = rng.next();
+            sizes.push(
+                ((seed as i32) >> (seed >> 59))
+                    .unsigned_abs()
+                    .clamp(1, 1 << 26) as i32,
+            );
+            coordinates.push((seed >> 32) as i32 >> (seed >> 59 & 15));
+        }
+        for &size in &sizes {
+            let checker = Material::matte(even)
+                .with_checker_fx(Fx::from_bits(size), odd)
+                .unwrap()
+                .checker()
+                .unwrap();
+            for &u in &coordinates {
+                for &v in coordinates.iter().step_by(3) {
+                    let index = |c: i32| (c as i64).div_euclid(size as i64);
+                    let expected = if (index(u) + index(v)) % 2 == 0 {
+                        even
+                    } else {
+                        odd
+                    };
+                    let uv = [Fx::from_bits(u), Fx::from_bits(v)];
+                    assert_eq!(checker.colour_at(even, uv), expected, "{u} {v} / {size}");
+                }
+            }
+        }
+    }
+}
