@@ -285,6 +285,15 @@ impl Vec3 {
         self.normalize_with_square(self.length_squared_wide())
     }
 
+    /// `|x| + |y| + |z|` in raw units (2⁻¹⁶), exactly: at least the length, at most √3 times
+    /// it, for bounds that need no square root.
+    #[inline]
+    pub(crate) const fn l1_raw(self) -> i64 {
+        self.x.to_bits().unsigned_abs() as i64
+            + self.y.to_bits().unsigned_abs() as i64
+            + self.z.to_bits().unsigned_abs() as i64
+    }
+
     /// [`Vec3::try_normalize`] given `square`, which must be `self.length_squared_wide()`:
     /// for callers that have it already, or can keep it up to date for less.
     #[inline]

@@ -375,8 +375,6 @@ impl<const N: usize, const L: usize> Scene<N, L> {
             // Not one of the scene's lights: no cones to go by.
             return (self.objects().iter().enumerate()).any(|(i, o)| i != leaving && blocks(o));
         };
-        // Only the objects that can shadow the one the ray leaves (bit `i` for object `i`; in
-        // scenes of more than 32 objects, every one is tried).
         let objects = self.objects();
         let may_block = |index: usize, object: &Object, cone: &ShadowCone| {
             cone.may_block(ray.dir, distance_squared) && index != leaving && blocks(object)

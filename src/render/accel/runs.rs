@@ -156,12 +156,7 @@ fn misses_all(normal: Vec3, numerator: i64, first: Vec3, last: Vec3) -> bool {
     if numerator == 0 {
         return true; // the eye on the plane: every ray leaves it or runs along it
     }
-    let l1 = |w: Vec3| {
-        w.x.to_bits().unsigned_abs() as i64
-            + w.y.to_bits().unsigned_abs() as i64
-            + w.z.to_bits().unsigned_abs() as i64
-    };
-    let margin = 4 * l1(first).max(l1(last));
+    let margin = 4 * first.l1_raw().max(last.l1_raw());
     let (a, b) = (normal.dot_wide_exact(first), normal.dot_wide_exact(last));
     if numerator < 0 {
         a.min(b) > margin

@@ -96,7 +96,8 @@ fn far_from_row<const N: usize, const L: usize>(
     let to_light = light - eye;
     let across = row_normal.dot(to_light);
     let pi = row_normal.scale(height) - normal.scale(across);
-    let error = Fx::from_bits(((height.abs().to_bits() as i64 + l1(to_light)) >> 14) as i32 + 12);
+    let error =
+        Fx::from_bits(((height.abs().to_bits() as i64 + to_light.l1_raw()) >> 14) as i32 + 12);
     let size = pi.length();
     let pi = pi.try_normalize()?;
     // A hit lies within OFF_PLANE of `plane` and within `t / 2¹²` of the row's plane, `t` its
@@ -127,7 +128,7 @@ fn far_from_row<const N: usize, const L: usize>(
             radius + ((radius + Fx::ONE) >> 6) + Fx::from_bits(1 << 8) + ((FAR + radius) >> 15);
         let to_centre = sphere.centre() - light;
         // At least the distance to the centre; within ±2048 · 3.
-        let distance = Fx::from_bits(l1(to_centre) as i32);
+        let distance = Fx::from_bits(to_centre.l1_raw() as i32);
         // The shadow ray passes within `wide` of the centre at a point at most
         // `distance + wide` from the light, which is within `(distance + wide) · angle` of Π.
         let limit = wide
@@ -148,13 +149,6 @@ fn quotient(num: Fx, den: Fx) -> Option<Fx> {
         return None;
     }
     Some(Fx::from_bits(div_q16(num as u64, den as u64) as i32 + 1))
-}
-
-/// `|x| + |y| + |z|` in raw units.
-fn l1(v: Vec3) -> i64 {
-    v.x.to_bits().unsigned_abs() as i64
-        + v.y.to_bits().unsigned_abs() as i64
-        + v.z.to_bits().unsigned_abs() as i64
 }
 
 #[cfg(test)]
