@@ -4,8 +4,9 @@ use crate::check;
 use crate::error::{Error, Quantity};
 use crate::geometry::hit::Hit;
 use crate::geometry::ray::Ray;
+use crate::numbers::fx;
 use crate::numbers::fx::{FAR, Fx};
-use crate::numbers::reciprocal::Dividend;
+use crate::numbers::reciprocal::{Mantissa, Scale, inverse};
 use crate::numbers::vec3::Vec3;
 
 /// An infinite plane through a point `p0` with unit normal `n`.
@@ -152,12 +153,19 @@ impl Plane {
 
     /// Where `ray` meets the plane: `t = −n·(p_r − p0) / (n·u_r)` (Eq. 4.2).
     ///
-    /// A ray parallel to the plane (`n·u_r = 0`), one whose hit lies behind its origin, one
+    /// The hit is worked out along the direction the ray was made along, `w` (for a camera's
+    /// ray, towards its pixel; for any other, `u_r` itself): the point is
+    /// `p_r + s·w` with `s = −n·(p_r − p0) / (n·w)`, the same point as `p_r + t·u_r`, without
+    /// the rounding of `u_r` in it. `s` is a quotient of 28 bits and more, so the point is
+    /// within a unit of 2⁻¹⁶ and `t·2⁻²⁸` of the exact one; `t` is the distance along `u_r`
+    /// to it, `(x − p_r)·u_r`.
+    ///
+    /// A ray parallel to the plane (`n·w = 0`), one whose hit lies behind its origin, one
     /// whose hit lies beyond [`FAR`] and one that starts on the plane (`n·(p_r − p0) = 0`
-    /// exactly: it leaves the plane or runs along it) all miss. The division happens only once the hit is known
-    /// to be in front and within `FAR`, so it cannot divide by zero or overflow. The normal of
-    /// the hit faces the ray: planes are two-sided. A bounded plane misses outside its
-    /// rectangle.
+    /// exactly: it leaves the plane or runs along it) all miss. The division happens only
+    /// once the hit is known to be in front, and the point is made only once it is known to
+    /// be within `FAR`, so nothing divides by zero or overflows. The normal of the hit faces
+    /// the ray: planes are two-sided. A bounded plane misses outside its rectangle.
     ///
     /// ```
     /// use fixray::{Plane, Ray, Vec3};
@@ -172,8 +180,7 @@ impl Plane {
     /// ```
     #[must_use]
     pub fn intersect(&self, ray: &Ray) -> Option<Hit> {
-        let t = self.hit_distance(ray)?;
-        Some(self.hit_at(ray, t))
+        self.hit_from(ray, &self.numerator(ray.origin))
     }
 
     /// The `t` of [`Plane::intersect`] alone, without the hit's normal.
@@ -187,56 +194,147 @@ impl Plane {
         let value = -self.normal.dot_wide_exact(origin - self.point);
         Numerator {
             value,
-            dividend: Dividend::new(value.unsigned_abs()),
+            mantissa: if value == 0 {
+                Mantissa::ZERO
+            } else {
+                Mantissa::new(value.unsigned_abs())
+            },
         }
     }
 
     /// [`Plane::hit_distance`] given `num`, which must be `self.numerator(ray.origin)`.
     pub(crate) fn hit_distance_from(&self, ray: &Ray, num: &Numerator) -> Option<Fx> {
-        // Both are exact Q32.32 values.
-        let den = self.normal.dot_wide_exact(ray.dir);
-        let (dividend, num) = (num.dividend, num.value);
-        // Parallel, the plane behind the origin, or the origin on the plane: a ray that starts
-        // on a plane leaves it (or runs along it) and meets it nowhere else.
-        if den == 0 || num == 0 || (num < 0) != (den < 0) {
+        Some(self.hit_from(ray, num)?.t)
+    }
+
+    /// [`Plane::intersect`] given `num`, which must be `self.numerator(ray.origin)`. Out of
+    /// line: the plain path, the run loops and the shadow rays share one copy.
+    #[inline(never)]
+    pub(crate) fn hit_from(&self, ray: &Ray, num: &Numerator) -> Option<Hit> {
+        let offset = self.offset_along(num, ray.w, ray.w.length_squared_wide())?;
+        let point = self.bounded_at(ray.origin.plus(offset))?;
+        Some(Hit {
+            t: distance(offset, ray.dir),
+            point,
+            normal: self.facing(num),
+        })
+    }
+
+    /// The hit of `ray` at distance `t`, which [`Plane::hit_distance`] found for it: the
+    /// same hit as [`Plane::intersect`].
+    pub(crate) fn hit_at(&self, ray: &Ray, t: Fx) -> Hit {
+        match self.intersect(ray) {
+            Some(hit) => hit,
+            // Not reached: `t` came from a hit.
+            None => Hit::facing(t, ray.at(t), self.normal, ray.dir),
+        }
+    }
+
+    /// The offset `s·w` from the origin of `num` (see [`Plane::numerator`]) to where a ray
+    /// along `w`, whose squared length is `square`, meets the unbounded plane, if it does
+    /// within [`FAR`]: [`Plane::intersect`]'s point less the ray's origin.
+    #[inline]
+    pub(crate) fn offset_along(&self, num: &Numerator, w: Vec3, square: u64) -> Option<Vec3> {
+        let scale = self.scale_along(num, self.normal.dot_wide_exact(w))?;
+        within_far(scale, square).then(|| offset(scale, w))
+    }
+
+    /// `s = −n·(p_r − p0) / (n·w)` for a direction `w` with `n·w = den` (exact, in Q32.32),
+    /// if the plane lies ahead: the ray is not parallel to it, does not start on it, and
+    /// points towards it.
+    #[inline]
+    pub(crate) fn scale_along(&self, num: &Numerator, den: i64) -> Option<Scale> {
+        let value = num.value;
+        if den == 0 || value == 0 || (value < 0) != (den < 0) {
             return None;
         }
-        let (num, den) = (num.unsigned_abs(), den.unsigned_abs());
-        // t ≤ FAR  ⇔  |num| ≤ FAR·|den|; |den| ≤ 2³³ so the product fits.
-        if num > den * FAR.to_num::<u64>() {
-            return None;
-        }
-        // t ≤ 2¹³: the quotient fits, within a unit of 2⁻¹⁶ of the exact one.
-        let t = Fx::from_bits(dividend.over(den) as i32);
+        Some(num.mantissa.over(den.unsigned_abs()))
+    }
+
+    /// `point` if it lies within the plane's bounds (always, for an unbounded plane).
+    #[inline]
+    pub(crate) fn bounded_at(&self, point: Vec3) -> Option<Vec3> {
         if let Some([min, max]) = self.bounds {
-            let [u, v] = self.coords(ray.at(t));
+            let [u, v] = self.coords(point);
             if u < min[0] || u > max[0] || v < min[1] || v > max[1] {
                 return None;
             }
         }
-        Some(t)
+        Some(point)
     }
 
-    /// The hit at distance `t` along `ray`, its normal facing the ray.
-    pub(crate) fn hit_at(&self, ray: &Ray, t: Fx) -> Hit {
-        Hit::facing(t, ray.at_hit(t), self.normal, ray.dir)
-    }
-
-    /// [`Plane::hit_at`] for the `t` that [`Plane::hit_distance_from`] found with `num`: the
-    /// ray met the plane, so `n·u_r` has the numerator's sign, and the normal is turned
-    /// exactly when that is positive. The same hit, without the product.
-    pub(crate) fn hit_at_from(&self, ray: &Ray, t: Fx, num: &Numerator) -> Hit {
-        let normal = if num.value > 0 {
+    /// The plane's normal facing rays from the origin of `num` that meet it: such a ray has
+    /// `n·w` of the numerator's sign, so the normal is turned exactly when that is positive.
+    #[inline]
+    pub(crate) fn facing(&self, num: &Numerator) -> Vec3 {
+        if num.value > 0 {
             -self.normal
         } else {
             self.normal
-        };
-        Hit {
-            t,
-            point: ray.at_hit(t),
-            normal,
         }
     }
+}
+
+/// Whether a hit at `s·w`, `s = scale`, on a ray whose `‖w‖²` is `square` (Q32.32) lies
+/// within [`FAR`]: `square ≤ far_reach(scale)`.
+#[inline]
+pub(crate) fn within_far(scale: Scale, square: u64) -> bool {
+    square <= far_reach(scale)
+}
+
+/// The largest `‖w‖²` (Q32.32) for which a hit at `s·w`, `s = scale`, counts as within
+/// [`FAR`]: `(FAR/s)²`, as `2^(58 + 2·shift) / m²` (FAR is 2²⁹ raw units) with `1/m` from
+/// `reciprocal::inverse` less 4 units of its 2³⁰, below the exact reciprocal. So the bound
+/// lies inside the exact one by at most about 2⁻²⁶ of it, and a hit that passes has
+/// `‖s·w‖ ≤ FAR`. One
+/// reciprocal, a square and a shift: a whole row that shares `s` shares the bound. A scale
+/// with no fractional bits (`shift ≤ 0`, `s ≥ 2²⁹`) reaches nothing: it would need `‖w‖`
+/// below 2⁻¹⁶, shorter than any ray's direction.
+#[inline]
+pub(crate) fn far_reach(scale: Scale) -> u64 {
+    const FAR_SQUARED_BITS: i32 = 2 * (FAR.to_bits().trailing_zeros() as i32);
+    if scale.shift <= 0 {
+        return 0;
+    }
+    // 1/m ≈ y · 2^−(30 + bits), y in (2³⁰, 2³¹]: 1/m² ≈ y² · 2^−(60 + 2·bits).
+    let (y, bits) = inverse(scale.m as u64);
+    let y = (y - 4) as u64; // y > 2³⁰
+    let y2 = y * y;
+    let exponent = FAR_SQUARED_BITS + 2 * scale.shift - 60 - 2 * bits as i32;
+    if exponent >= 0 {
+        // y² is about 2⁶⁰ or more: a shift of 4 or more leaves u64, and 0..=3 may.
+        if exponent >= 4 || y2 > u64::MAX >> exponent {
+            u64::MAX
+        } else {
+            y2 << exponent
+        }
+    } else if exponent > -64 {
+        y2 >> -exponent
+    } else {
+        0
+    }
+}
+
+/// `s·w`, each component rounded to nearest, for a scale that passed [`within_far`]: every
+/// component is at most FAR, and `w`'s at most 2³⁰ times `m` below 2³¹ fits 64 bits.
+#[inline]
+pub(crate) fn offset(scale: Scale, w: Vec3) -> Vec3 {
+    let c = |c: Fx| {
+        Fx::from_bits(if scale.shift >= 64 {
+            0 // |c·m| < 2⁶¹: rounds to zero
+        } else {
+            fx::mul_shift_round(c.to_bits(), scale.m, scale.shift as u32) as i32
+        })
+    };
+    Vec3::new(c(w.x), c(w.y), c(w.z))
+}
+
+/// The distance `t` along the unit direction `dir` to the point `offset` from the origin:
+/// `offset · dir`, rounded, and never negative.
+#[inline]
+pub(crate) fn distance(offset: Vec3, dir: Vec3) -> Fx {
+    let along = offset.dot_wide_exact(dir);
+    Fx::from_bits(((along + (1 << 15)) >> 16).max(0) as i32)
 }
 
 /// A plane's numerator of Eq. 4.2 for rays from one origin ([`Plane::numerator`]), with its
@@ -245,14 +343,14 @@ impl Plane {
 pub(crate) struct Numerator {
     /// `−n·(p_r − p0)` in Q32.32.
     pub(crate) value: i64,
-    dividend: Dividend,
+    mantissa: Mantissa,
 }
 
 impl Numerator {
     /// For objects that are not planes.
     pub(crate) const NONE: Numerator = Numerator {
         value: 0,
-        dividend: Dividend::new(0),
+        mantissa: Mantissa::ZERO,
     };
 }
 

@@ -10,10 +10,18 @@ use crate::numbers::vec3::Vec3;
 /// Every point on the ray is `x(t) = p_r + t·u_r` for a distance `t ≥ 0` (Eq. 4.1). The
 /// origin lies within ±[`LIMIT`](crate::LIMIT) and the direction is a unit vector, as
 /// [`Ray::new`] and the [`Camera`](crate::Camera) make them.
+///
+/// A ray also keeps the direction it was made along before normalising, `w` (a camera's ray
+/// points at a pixel of its screen): its hits on planes are worked out along `w`, which is
+/// exact, rather than along the rounded `u_r` (see [`Plane::intersect`](crate::Plane)). Two
+/// rays are equal when all three are.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Ray {
     pub(crate) origin: Vec3,
     pub(crate) dir: Vec3,
+    /// The direction before normalising, `u_r` times a positive length, each component at most
+    /// 2³⁰ in raw units (a camera's rays stay within its ray budget; other rays keep `u_r`).
+    pub(crate) w: Vec3,
 }
 
 impl Ray {
@@ -34,7 +42,11 @@ impl Ray {
             Err(e) => return Err(e),
         };
         match check::direction(dir, Quantity::RayDirection) {
-            Ok(dir) => Ok(Ray { origin, dir }),
+            Ok(dir) => Ok(Ray {
+                origin,
+                dir,
+                w: dir,
+            }),
             Err(e) => Err(e),
         }
     }
@@ -54,7 +66,11 @@ impl Ray {
             });
         }
         match check::direction(dir, Quantity::RayDirection) {
-            Ok(dir) => Ok(Ray { origin, dir }),
+            Ok(dir) => Ok(Ray {
+                origin,
+                dir,
+                w: dir,
+            }),
             Err(e) => Err(e),
         }
     }
@@ -81,7 +97,23 @@ impl Ray {
             is_unit(dir),
             "Ray::new_unchecked: the direction is not a unit vector"
         );
-        Ray { origin, dir }
+        Ray {
+            origin,
+            dir,
+            w: dir,
+        }
+    }
+
+    /// A ray made along `w` (components at most 2³⁰ in raw units), whose normalised direction
+    /// is `dir`, as the camera makes its rays: planes are met along `w`.
+    #[inline]
+    #[must_use]
+    pub(crate) const fn along(origin: Vec3, dir: Vec3, w: Vec3) -> Self {
+        debug_assert!(
+            w.within_raw(1 << 30),
+            "Ray::along: the direction is outside the ray budget"
+        );
+        Ray { origin, dir, w }
     }
 
     /// The point at distance `t` along the ray: `p_r + t·u_r`, each component saturating at

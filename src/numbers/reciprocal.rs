@@ -142,12 +142,7 @@ impl Dividend {
             self.num > 0 && (self.num as u128) < (den as u128) << 16,
             "div_q16: the quotient does not fit 32 bits"
         );
-        let den_bits = bit_length(den); // den < 2^den_bits
-        let d = top_word(den, den_bits);
-        let mut y = between_knots(&RECIPROCAL_KNOTS, 128, d); // 1/δ in Q2.30
-        let dy = (wide_mul_u32(d, y) >> 32) as u32; // δ·y, near 1, in Q2.30
-        let factor = (2u32 << 30).wrapping_sub(dy); // 2 − δ·y, near 1, in Q2.30
-        y = (wide_mul_u32(y, factor) >> 30) as u32;
+        let (y, den_bits) = inverse(den);
         // num ≈ n · 2^k with n its top 32 bits: num·2¹⁶/den = n · 2^k · 2¹⁶ · y · 2⁻³⁰ / 2^den_bits
         let shift = 14 + den_bits - self.below;
         let q = wide_mul_u32(self.top, y);
@@ -160,6 +155,68 @@ impl Dividend {
             return (((q >> 32) as u32) + (1 << (shift - 33))) >> (shift - 32);
         }
         ((q + (1 << (shift - 1))) >> shift) as u32
+    }
+}
+
+/// `1/den` for `den > 0`, as `(y, bits)` with `den < 2^bits` and `2^bits/den ≈ y · 2⁻³⁰`:
+/// `den` is scaled into `δ ∈ [½, 1)`, and `y ∈ (2³⁰, 2³¹]` is `1/δ` in Q2.30 to about 2⁻²⁹.
+/// Newton's step for a reciprocal approaches it from below, but the step's truncated product
+/// `δ·y` can leave `y` up to 3 units above it (a test holds it below 4).
+#[inline]
+pub(crate) fn inverse(den: u64) -> (u32, u32) {
+    let den_bits = bit_length(den); // den < 2^den_bits
+    let d = top_word(den, den_bits);
+    let y = between_knots(&RECIPROCAL_KNOTS, 128, d); // 1/δ in Q2.30
+    let dy = (wide_mul_u32(d, y) >> 32) as u32; // δ·y, near 1, in Q2.30
+    let factor = (2u32 << 30).wrapping_sub(dy); // 2 − δ·y, near 1, in Q2.30
+    ((wide_mul_u32(y, factor) >> 30) as u32, den_bits)
+}
+
+/// A positive number `m · 2^−shift` with `m` in `[2²⁹, 2³¹)`: 29 bits and more of a quotient,
+/// whatever its size, for products with 32-bit values (a ray's direction, in
+/// `plane.rs`). `shift` may be negative, for quotients of 2³¹ and more.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct Scale {
+    pub(crate) m: i32,
+    pub(crate) shift: i32,
+}
+
+/// A positive dividend split into its top 32 bits, `top` in `[2³¹, 2³²)`, and its bit length
+/// `bits`: it is `top · 2^(bits − 32)`, exactly when it has 32 bits or fewer, to a relative
+/// 2⁻³¹ otherwise. Made once, divided by many.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct Mantissa {
+    top: u32,
+    bits: u32,
+}
+
+impl Mantissa {
+    /// Zero, which no division takes.
+    pub(crate) const ZERO: Mantissa = Mantissa { top: 0, bits: 0 };
+
+    /// `num`, which must not be 0.
+    #[inline]
+    pub(crate) const fn new(num: u64) -> Self {
+        debug_assert!(num > 0, "Mantissa::new: zero");
+        let bits = bit_length(num);
+        Mantissa {
+            top: top_word(num, bits),
+            bits,
+        }
+    }
+
+    /// `self / den` for `den > 0`, to a relative 2⁻²⁸: `top · 2^(bits − 32)` times the
+    /// reciprocal `y · 2^(−30 − den_bits)`, whose product `q` lies in `[2⁶¹, 2⁶³)`, of which
+    /// `m` keeps the high word: `m · 2^(bits − 30 − den_bits)`.
+    #[inline]
+    pub(crate) fn over(self, den: u64) -> Scale {
+        debug_assert!(den > 0, "Mantissa::over: zero divisor");
+        let (y, den_bits) = inverse(den);
+        let q = wide_mul_u32(self.top, y);
+        Scale {
+            m: (q >> 32) as i32,
+            shift: 30 + den_bits as i32 - self.bits as i32,
+        }
     }
 }
 
@@ -211,6 +268,29 @@ mod tests {
             worst = worst.max(relative_error(x));
         }
         assert!(worst < 2f64.powi(-29), "worst relative error {worst:e}");
+    }
+
+    #[test]
+    fn inverse_is_less_than_four_units_above_the_exact_one() {
+        let mut rng = crate::xorshift::XorShift(0x1234_5678_9abc_def1);
+        let mut worst = f64::MIN;
+        let mut check = |den: u64| {
+            let (y, bits) = inverse(den);
+            let exact = 2f64.powi(bits as i32 + 30) / den as f64;
+            worst = worst.max(y as f64 - exact);
+        };
+        for _ in 0..1_000_000 {
+            check((rng.next() >> (rng.next() % 34)).max(1));
+        }
+        // The scales of `plane.rs` are m in [2²⁹, 2³¹): both ends, densely.
+        for den in ((1u64 << 29)..(1 << 29) + 50_000).chain((1 << 31) - 50_000..1 << 31) {
+            check(den);
+        }
+        assert!(worst < 4.0, "y exceeds 2^(bits + 30)/den by {worst}");
+        assert!(
+            worst > 0.0,
+            "the bound is not tight: the test checks nothing"
+        );
     }
 
     #[test]

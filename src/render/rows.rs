@@ -4,7 +4,11 @@ use core::ops::Range;
 
 use crate::error::Error;
 use crate::framebuffer::Framebuffer;
+use crate::geometry::plane::{Numerator, Plane, far_reach};
 use crate::geometry::ray::Ray;
+use crate::geometry::shape::Shape;
+use crate::numbers::fx::Fx;
+use crate::numbers::reciprocal::Scale;
 use crate::numbers::vec3::Vec3;
 use crate::render::accel::row_rays::RowSquares;
 use crate::render::accel::runs::Runs;
@@ -49,21 +53,49 @@ pub fn render_row<const N: usize, const L: usize>(
         row,
         0..camera.cols(),
         sky.is_some(),
-        |first, end, cast, shadowers| match cast {
-            Some((ray, hit)) => {
-                if let Some(pixel) = out.get_mut(first as usize) {
-                    let light = scene.radiance_among(ray, hit, shadowers);
-                    *pixel = crate::scene::linear::to_rgb(light);
-                }
-            }
-            None => {
-                if let (Some(run), Some(sky)) = (out.get_mut(first as usize..end as usize), sky) {
-                    run.fill(sky);
-                }
-            }
+        true,
+        |first, end, cast, shadowers| {
+            paint(
+                scene,
+                out,
+                first as usize,
+                end as usize,
+                cast,
+                shadowers,
+                sky,
+            )
         },
     );
     Ok(())
+}
+
+/// Paints what [`cast_row`] hands over for columns `first..end` into `out` (indexed from
+/// there): a shaded pixel, or a run of plain sky.
+#[inline(always)]
+fn paint<const N: usize, const L: usize>(
+    scene: &Scene<N, L>,
+    out: &mut [Rgb],
+    first: usize,
+    end: usize,
+    cast: Cast<'_>,
+    shadowers: &[u32; L],
+    sky: Option<Rgb>,
+) {
+    let light = match cast {
+        Cast::Ray(ray, hit) => scene.radiance_among(ray, hit, shadowers),
+        Cast::Matte(object, point, normal) => {
+            scene.radiance_matte(object, point, normal, shadowers)
+        }
+        Cast::Empty => {
+            if let (Some(run), Some(sky)) = (out.get_mut(first..end), sky) {
+                run.fill(sky);
+            }
+            return;
+        }
+    };
+    if let Some(pixel) = out.get_mut(first) {
+        *pixel = crate::scene::linear::to_rgb(light);
+    }
 }
 
 /// [`render_row`]'s pixels for columns `cols` of a checked display row, into `out`
@@ -86,21 +118,10 @@ pub(crate) fn render_columns<const N: usize, const L: usize>(
         row,
         cols,
         sky.is_some(),
+        true,
         |first, end, cast, shadowers| {
             let (first, end) = ((first - offset) as usize, (end - offset) as usize);
-            match cast {
-                Some((ray, hit)) => {
-                    if let Some(pixel) = out.get_mut(first) {
-                        let light = scene.radiance_among(ray, hit, shadowers);
-                        *pixel = crate::scene::linear::to_rgb(light);
-                    }
-                }
-                None => {
-                    if let (Some(run), Some(sky)) = (out.get_mut(first..end), sky) {
-                        run.fill(sky);
-                    }
-                }
-            }
+            paint(scene, out, first, end, cast, shadowers, sky);
         },
     );
 }
@@ -142,8 +163,9 @@ pub fn shoot_row<const N: usize, const L: usize>(
         row,
         0..camera.cols(),
         false,
+        false,
         |col, _, cast, _| {
-            if let Some((ray, hit)) = cast {
+            if let Cast::Ray(ray, hit) = cast {
                 each(col.into(), ray, hit);
             }
         },
@@ -181,39 +203,55 @@ pub fn shoot_row_skipping<const N: usize, const L: usize>(
         row,
         0..camera.cols(),
         true,
+        false,
         |first, end, cast, _| match cast {
-            Some((ray, hit)) => each(first.into(), ray, hit),
-            None => empty(first.into()..end.into()),
+            Cast::Ray(ray, hit) => each(first.into(), ray, hit),
+            _ => empty(first.into()..end.into()),
         },
     );
     Ok(())
 }
 
+/// What [`cast_row`] hands over for a column, or a run of them.
+pub(crate) enum Cast<'a> {
+    /// A run in which no object can be hit, without rays.
+    Empty,
+    /// A pixel's ray and its nearest hit.
+    Ray(&'a Ray, Option<SceneHit>),
+    /// A pixel whose ray meets a matte plane, object `.0`, at `.1`, where its normal facing
+    /// the eye is `.2`: shaded without the ray, which is not made (see
+    /// `Scene::radiance_matte`).
+    Matte(usize, Vec3, Vec3),
+}
+
 /// The engine of [`shoot_row`] and [`render_row`]: the row's runs ([`Runs`]), and in each the
 /// rays, by column steps ([`Camera::row_rays`]), shot at the run's objects; each is handed to
-/// `each(col, col + 1, Some((ray, hit)), shadowers)`, with `shadowers[i]` the objects that
+/// `each(col, col + 1, Cast::Ray(ray, hit), shadowers)`, with `shadowers[i]` the objects that
 /// may shadow the row's plane hits from light `i` (see `Runs::shadowers`). Only columns
 /// `cols` are cast.
 ///
 /// With `skip_empty`, a run in which no object can be hit is handed over whole and without
-/// rays, as `each(first, end, None, shadowers)`: `render_row` paints a plain sky so, which
-/// needs no ray.
+/// rays, as `each(first, end, Cast::Empty, shadowers)`: `render_row` paints a plain sky so,
+/// which needs no ray. With `matte`, a run that can meet one matte plane only hands over
+/// its hits as [`Cast::Matte`], without rays (a miss still comes with its ray): the
+/// point where a ray meets a plane needs only the direction towards the pixel, not the unit
+/// one (`Plane::offset_along`), and shading a matte surface needs neither.
 fn cast_row<const N: usize, const L: usize>(
     scene: &Scene<N, L>,
     camera: &Camera,
     row: u16,
     cols: Range<u16>,
     skip_empty: bool,
-    mut each: impl FnMut(u16, u16, Option<(&Ray, Option<SceneHit>)>, &[u32; L]),
+    matte: bool,
+    mut each: impl FnMut(u16, u16, Cast<'_>, &[u32; L]),
 ) {
     let mut runs = Runs::new(scene, camera, row);
     runs.limit(cols);
     let shadowers = *runs.shadowers();
-    let mut each =
-        |first, end, cast: Option<(&Ray, Option<SceneHit>)>| each(first, end, cast, &shadowers);
+    let mut each = |first, end, cast: Cast<'_>| each(first, end, cast, &shadowers);
     while let Some((first, end, here)) = runs.next_run() {
         if here == 0 && skip_empty {
-            each(first, end, None);
+            each(first, end, Cast::Empty);
             continue;
         }
         let eye = runs.eye();
@@ -221,12 +259,42 @@ fn cast_row<const N: usize, const L: usize>(
         // the nearest of one is that one, and the loop has no set of objects to walk.
         if here.is_power_of_two() && scene.objects().len() <= 64 {
             let index = here.trailing_zeros() as usize;
+            if matte && let Some(plane) = matte_plane(scene, index) {
+                let towards = runs.towards(first);
+                cast_matte_run(
+                    camera,
+                    &plane,
+                    index,
+                    eye.numerator(index),
+                    towards,
+                    first..end,
+                    &mut each,
+                );
+                continue;
+            }
             let shoot = |ray: &Ray| scene.shoot_one_from_eye(ray, index, eye);
             cast_run(camera, runs.towards(first), first..end, shoot, &mut each);
         } else {
             let shoot = |ray: &Ray| scene.shoot_from_eye(ray, here, eye);
             cast_run(camera, runs.towards(first), first..end, shoot, &mut each);
         }
+    }
+}
+
+/// Object `index` as a plane, if it is one whose surface is all there is to see: no
+/// highlight, no mirror, no refraction.
+fn matte_plane<const N: usize, const L: usize>(scene: &Scene<N, L>, index: usize) -> Option<Plane> {
+    let object = scene.objects().get(index)?;
+    let material = &object.material;
+    match object.shape {
+        Shape::Plane(plane)
+            if material.specular == Fx::ZERO
+                && material.reflect == Fx::ZERO
+                && material.refraction.is_none() =>
+        {
+            Some(plane)
+        }
+        _ => None,
     }
 }
 
@@ -238,7 +306,7 @@ fn cast_run(
     mut towards: Vec3,
     cols: Range<u16>,
     shoot: impl Fn(&Ray) -> Option<SceneHit>,
-    each: &mut impl FnMut(u16, u16, Option<(&Ray, Option<SceneHit>)>),
+    each: &mut impl FnMut(u16, u16, Cast<'_>),
 ) {
     // Consecutive pixels differ by one column step, exactly: `RowRays`' walk, written out
     // because through the iterator the frame measured 19 instructions a pixel more on the
@@ -247,9 +315,110 @@ fn cast_run(
     for col in cols {
         let ray = camera.ray_along(towards, square.now(towards));
         let hit = shoot(&ray);
-        each(col, col + 1, Some((&ray, hit)));
+        each(col, col + 1, Cast::Ray(&ray, hit));
         towards = towards.plus(camera.column_step());
         square.step();
+    }
+}
+
+/// [`cast_run`] for a run that can meet one matte plane only, object `index` (`plane`), whose
+/// numerator for rays from the eye is `num`: each hit is handed over as [`Cast::Matte`],
+/// without a ray, and each miss with its ray.
+///
+/// The hit is `Plane::offset_along` the direction towards the pixel, bit for bit. On a row
+/// whose column step is parallel to the plane (`n·r = 0`, a level camera over a level
+/// floor), `n·w` and so the plane's scale `s` are the same for every column: the division,
+/// and the bound on `‖w‖²` that [`FAR`](crate::FAR) sets, are worked out once, and each
+/// offset `s·w` is carried along the row by exact additions of `s·r`.
+#[inline(never)]
+fn cast_matte_run(
+    camera: &Camera,
+    plane: &Plane,
+    index: usize,
+    num: &Numerator,
+    mut towards: Vec3,
+    cols: Range<u16>,
+    each: &mut impl FnMut(u16, u16, Cast<'_>),
+) {
+    let eye = camera.eye();
+    let step = camera.column_step();
+    let normal = plane.facing(num);
+    let mut square = RowSquares::new(towards, step);
+    let n = plane.normal();
+    // A level row: the bound on ‖w‖² and the carried offsets. Where the plane is not ahead
+    // of the row, nothing is within reach.
+    let level = (n.dot_wide_exact(step) == 0).then(|| {
+        let scale = plane.scale_along(num, n.dot_wide_exact(towards));
+        let reach = scale.map_or(0, far_reach);
+        let scale = scale.unwrap_or(Scale { m: 0, shift: 1 });
+        (reach, Offsets::new(scale, towards, step))
+    });
+    let mut level = level;
+    for col in cols {
+        let s = square.now(towards);
+        let offset = match &level {
+            Some((reach, offsets)) => (s <= *reach).then(|| offsets.now()),
+            None => plane.offset_along(num, towards, s),
+        };
+        match offset.and_then(|offset| plane.bounded_at(eye.plus(offset))) {
+            Some(point) => each(col, col + 1, Cast::Matte(index, point, normal)),
+            None => {
+                let ray = camera.ray_along(towards, s);
+                each(col, col + 1, Cast::Ray(&ray, None));
+            }
+        }
+        towards = towards.plus(step);
+        square.step();
+        if let Some((_, offsets)) = &mut level {
+            offsets.step();
+        }
+    }
+}
+
+/// `s·w` along a row, `w` stepping by `r`: `plane::offset``(scale, w)` for each column, carried
+/// as the exact products `w·m` (below 2⁶¹: `w` within the ray budget, `m` below 2³¹), to
+/// which each column adds `r·m`, rounded at each column as `offset` rounds.
+struct Offsets {
+    products: [i64; 3],
+    steps: [i64; 3],
+    shift: i32,
+}
+
+impl Offsets {
+    fn new(scale: Scale, start: Vec3, step: Vec3) -> Self {
+        let m = scale.m as i64;
+        let p = |c: Fx| c.to_bits() as i64 * m;
+        Offsets {
+            products: [p(start.x), p(start.y), p(start.z)],
+            steps: [p(step.x), p(step.y), p(step.z)],
+            shift: scale.shift,
+        }
+    }
+
+    /// `offset(scale, w)` for the current `w`: `⌊(w·m + 2^(shift−1)) / 2^shift⌋`, which is
+    /// what `fx::mul_shift_round` gives for shifts up to 63; beyond, zero.
+    #[inline]
+    fn now(&self) -> Vec3 {
+        let shift = self.shift;
+        let c = |p: i64| {
+            Fx::from_bits(if (1..64).contains(&shift) {
+                ((p + (1 << (shift - 1))) >> shift) as i32
+            } else {
+                0
+            })
+        };
+        Vec3::new(
+            c(self.products[0]),
+            c(self.products[1]),
+            c(self.products[2]),
+        )
+    }
+
+    #[inline]
+    fn step(&mut self) {
+        for (p, s) in self.products.iter_mut().zip(self.steps) {
+            *p = p.wrapping_add(s);
+        }
     }
 }
 

@@ -6,6 +6,7 @@
 //! bit for bit.
 
 use crate::geometry::Shape;
+use crate::geometry::hit::Hit;
 use crate::geometry::ray::Ray;
 use crate::geometry::refract::{refract, schlick};
 use crate::numbers::fx::{self, Fx};
@@ -42,30 +43,34 @@ impl<const N: usize, const L: usize> Scene<N, L> {
             if Some(index) == leaving {
                 None
             } else {
-                shape.hit_distance(ray)
+                distance(ray, shape)
             }
         })
     }
 
     /// The nearest hit along `ray`, with `distance(index, shape)` the distance at which it
-    /// meets object `index`, if it does: on a tie the first object wins.
+    /// meets object `index`, if it does, and the whole hit where that came at no extra cost
+    /// (a plane's point is found before its distance): on a tie the first object wins.
     #[inline(always)]
     fn nearest(
         &self,
         ray: &Ray,
-        distance: impl Fn(usize, &Shape) -> Option<Fx>,
+        distance: impl Fn(usize, &Shape) -> Option<(Fx, Option<Hit>)>,
     ) -> Option<SceneHit> {
         // Hits lie within FAR, so any hit is nearer than MAX.
-        let (mut best, mut nearest) = (Fx::MAX, usize::MAX);
+        let (mut best, mut nearest, mut known) = (Fx::MAX, usize::MAX, None);
         for (index, object) in self.objects().iter().enumerate() {
-            if let Some(t) = distance(index, &object.shape)
+            if let Some((t, hit)) = distance(index, &object.shape)
                 && t < best
             {
-                (best, nearest) = (t, index);
+                (best, nearest, known) = (t, index, hit);
             }
         }
-        // Distances first; the hit point and normal only for the nearest.
-        let hit = self.objects().get(nearest)?.shape.hit_at(ray, best);
+        // Distances first; a sphere's hit point and normal only for the nearest.
+        let hit = match known {
+            Some(hit) => hit,
+            None => self.objects().get(nearest)?.shape.hit_at(ray, best),
+        };
         Some(SceneHit {
             hit,
             object: nearest,
@@ -108,7 +113,15 @@ impl<const N: usize, const L: usize> Scene<N, L> {
             return self.background().along(ray.dir);
         };
         // The first surface has weight 1: its light is the sum so far, exactly.
-        let light = self.local(object, &h, ray.dir, plane_shadowers);
+        let (point, normal) = (h.hit.point, h.hit.normal);
+        let light = self.local(
+            object,
+            h.object,
+            point,
+            normal,
+            Some(ray.dir),
+            plane_shadowers,
+        );
         if object.material.reflect == Fx::ZERO && object.material.refraction.is_none() {
             return light;
         }
@@ -144,7 +157,15 @@ impl<const N: usize, const L: usize> Scene<N, L> {
                 Start::Off(_) => None,
             };
             let exiting = self.exits(&h, within);
-            let light = self.local(object, &h, next.ray.dir, &[!0; L]);
+            let (point, normal) = (h.hit.point, h.hit.normal);
+            let light = self.local(
+                object,
+                h.object,
+                point,
+                normal,
+                Some(next.ray.dir),
+                &[!0; L],
+            );
             add(&mut sum, next.weight, light);
             self.branch(
                 &mut sum,
@@ -279,26 +300,48 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// any ray does. On a tie the object added first wins.
     pub(crate) fn shoot_within(&self, ray: &Ray, within: usize) -> Option<SceneHit> {
         self.nearest(ray, |index, shape| match shape {
-            Shape::Sphere(sphere) if index == within => Some(sphere.exit_distance(ray)),
-            shape => shape.hit_distance(ray),
+            Shape::Sphere(sphere) if index == within => Some((sphere.exit_distance(ray), None)),
+            shape => distance(ray, shape),
         })
     }
 
-    /// The surface's own light at a hit: ambient and diffuse times its colour, plus white
-    /// highlights, from every light whose shadow ray reaches it. On a plane, a shadow ray
-    /// towards light `i` tries only the objects of `plane_shadowers[i]`.
+    /// The light of object `index` (`object`) at `point`, whose normal there is `normal`,
+    /// where nothing but its own surface is seen: a matte plane met by a ray from the eye,
+    /// which [`render_row`](crate::render_row) shades without making the ray (the same light
+    /// as [`Scene::radiance_among`] for it: a matte surface has no highlight, and no mirror or
+    /// refracted ray).
+    pub(crate) fn radiance_matte(
+        &self,
+        index: usize,
+        point: Vec3,
+        normal: Vec3,
+        plane_shadowers: &[u32; L],
+    ) -> Linear {
+        match self.objects().get(index) {
+            Some(object) => self.local(object, index, point, normal, None, plane_shadowers),
+            None => [Fx::ZERO; 3], // not reached: the index is a run's object
+        }
+    }
+
+    /// The surface's own light where a ray along `view` met object `index` (`object`) at
+    /// `point`, its normal there `normal`: ambient and diffuse times its colour, plus white
+    /// highlights, from every light whose shadow ray reaches it. Only a highlight needs the
+    /// view, and a surface without one may be shaded without it (`None`). On a plane, a
+    /// shadow ray towards light `i` tries only the objects of `plane_shadowers[i]`.
     fn local(
         &self,
         object: &Object,
-        hit: &SceneHit,
-        dir: Vec3,
+        index: usize,
+        point: Vec3,
+        normal: Vec3,
+        view: Option<Vec3>,
         plane_shadowers: &[u32; L],
     ) -> Linear {
-        let (material, normal) = (&object.material, hit.hit.normal);
+        let material = &object.material;
         let on_plane = matches!(object.shape, Shape::Plane(_));
         let (mut diffuse, mut specular) = (Fx::ZERO, Fx::ZERO);
-        let mut light_up = |index: usize, light: &Light| {
-            let to_light = light.position.minus(hit.hit.point);
+        let mut light_up = |light_index: usize, light: &Light| {
+            let to_light = light.position.minus(point);
             let distance_squared = to_light.length_squared_wide();
             let Some(l) = to_light.normalize_with_square(distance_squared) else {
                 return;
@@ -308,17 +351,18 @@ impl<const N: usize, const L: usize> Scene<N, L> {
                 return;
             }
             if self.shadows() {
-                let shadow_ray = Ray::new_unchecked(hit.hit.point, l);
-                let among = match plane_shadowers.get(index) {
+                let shadow_ray = Ray::new_unchecked(point, l);
+                let among = match plane_shadowers.get(light_index) {
                     Some(&set) if on_plane => set,
                     _ => !0,
                 };
-                if self.occluded(&shadow_ray, distance_squared, hit.object, index, among) {
+                if self.occluded(&shadow_ray, distance_squared, index, light_index, among) {
                     return;
                 }
             }
             diffuse = diffuse.saturating_add(fx::mul_unit(light.intensity, cos));
             if material.specular > Fx::ZERO
+                && let Some(dir) = view
                 && let Some(half) = (l - dir).try_normalize()
             {
                 let s = normal.dot(half).max(Fx::ZERO).min(Fx::ONE);
@@ -330,8 +374,8 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         match self.lights() {
             [only] => light_up(0, only),
             lights => {
-                for (index, light) in lights.iter().enumerate() {
-                    light_up(index, light);
+                for (light_index, light) in lights.iter().enumerate() {
+                    light_up(light_index, light);
                 }
             }
         }
@@ -340,7 +384,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         let k = self
             .ambient()
             .saturating_add(fx::mul(material.diffuse, diffuse));
-        let colour = object.colour_at(hit.hit.point);
+        let colour = object.colour_at(point);
         // A channel is at most 1: its product with k needs no saturation.
         let lit = |c: u8| fx::mul_fits(k, channel_to_linear(c));
         let lit = [lit(colour.r), lit(colour.g), lit(colour.b)];
@@ -406,6 +450,19 @@ impl<const N: usize, const L: usize> Scene<N, L> {
             }
         }
         false
+    }
+}
+
+/// Where `ray` meets `shape`: its distance, and for a plane the whole hit, which costs no
+/// more.
+#[inline(always)]
+fn distance(ray: &Ray, shape: &Shape) -> Option<(Fx, Option<Hit>)> {
+    match shape {
+        Shape::Plane(plane) => {
+            let hit = plane.intersect(ray)?;
+            Some((hit.t, Some(hit)))
+        }
+        Shape::Sphere(sphere) => Some((sphere.hit_distance(ray)?, None)),
     }
 }
 

@@ -967,19 +967,23 @@ pub fn check_hit<const N: usize>(scene: &Scene<N>, ray: &Ray, hit: Option<SceneH
         "hit distance {} outside [0, FAR] for {ray:?}",
         hit.hit().t()
     );
-    let expect = ray.at(hit.hit().t());
-    for (p, q) in [
-        (hit.hit().point().x, expect.x),
-        (hit.hit().point().y, expect.y),
-        (hit.hit().point().z, expect.z),
-    ] {
-        assert!(
-            (p.to_bits() as i64 - q.to_bits() as i64).abs() <= 1,
-            "hit point {:?} is not origin + t·dir = {expect:?}",
-            hit.hit().point()
-        );
-    }
     let object = &scene.objects()[hit.object()];
+    if let Shape::Plane(plane) = object.shape {
+        check_plane_point(&plane, ray, &hit.hit());
+    } else {
+        let expect = ray.at(hit.hit().t());
+        for (p, q) in [
+            (hit.hit().point().x, expect.x),
+            (hit.hit().point().y, expect.y),
+            (hit.hit().point().z, expect.z),
+        ] {
+            assert!(
+                (p.to_bits() as i64 - q.to_bits() as i64).abs() <= 1,
+                "hit point {:?} is not origin + t·dir = {expect:?}",
+                hit.hit().point()
+            );
+        }
+    }
     let n = hit.hit().normal().to_f64();
     match object.shape {
         Shape::Plane(plane) => {
@@ -1034,6 +1038,47 @@ pub fn check_hit<const N: usize>(scene: &Scene<N>, ray: &Ray, hit: Option<SceneH
             );
         }
     }
+}
+
+/// [ASSERT: a plane's hit point is where the ray meets it] A plane is met along the direction
+/// the ray was made along (`w`, exact), not along its rounded unit direction: the point must
+/// be the exact `p_r + w·s`, `s = −n·(p_r − p0)/(n·w)`, worked out in f64 from the Q16.16
+/// values, to within a unit of 2⁻¹⁶ and `t·2⁻²⁷` (`s` is good to about 2⁻²⁸, and
+/// `‖w·s‖ = t`). `w` is not public; it is the ray's unit direction scaled to the exact
+/// distance, which the test recovers as `(x − p_r)` for the exact `x`, so the exact point
+/// is the one on the plane along `u_r` nudged by the direction's rounding: within
+/// `t·√3·2⁻¹⁶` of `p_r + t·u_r`. Both are asserted: on the plane, and along the ray. And
+/// `t` is the distance to the point along `u_r`, to a unit and the same rounding.
+fn check_plane_point(plane: &fixray::Plane, ray: &Ray, hit: &fixray::Hit) {
+    let (x, o) = (hit.point().to_f64(), ray.origin().to_f64());
+    let n = plane.normal().to_f64();
+    let p0 = plane.point().to_f64();
+    let t = hit.t().to_num::<f64>();
+    let unit = ULP;
+    // On the plane: n·(x − p0) = 0 up to the point's rounding and s's.
+    let off_plane = (0..3).map(|a| n[a] * (x[a] - p0[a])).sum::<f64>();
+    let allowed = unit * (1.0 + t / 2048.0) * 1.8;
+    assert!(
+        off_plane.abs() <= allowed,
+        "plane hit {x:?} lies {off_plane} off the plane (allowed {allowed}) for {ray:?}"
+    );
+    // Along the ray: within its direction's rounding of p_r + t·u_r.
+    let expect = ray.at(hit.t()).to_f64();
+    let along = unit * (1.0 + t * 1.74 + t / 2048.0);
+    for a in 0..3 {
+        assert!(
+            (x[a] - expect[a]).abs() <= along,
+            "plane hit {x:?} is not along the ray: p_r + t·u_r = {expect:?} (allowed {along}) \
+             for {ray:?}"
+        );
+    }
+    // t is the distance to the point along u_r.
+    let d = ray.dir().to_f64();
+    let dist = (0..3).map(|a| (x[a] - o[a]) * d[a]).sum::<f64>();
+    assert!(
+        (dist - t).abs() <= unit * (1.0 + t * 1.74),
+        "plane hit distance {t} is not (x − p_r)·u_r = {dist} for {ray:?}"
+    );
 }
 
 /// [ASSERT: a surface through the ray's origin] A ray that starts exactly on a surface and

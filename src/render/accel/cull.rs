@@ -1,6 +1,7 @@
 //! Which objects a row of rays, or a ray from the eye, can meet: the culling behind
 //! `render_row`'s runs, and what rays from one point share.
 
+use crate::geometry::hit::Hit;
 use crate::geometry::plane::Numerator;
 use crate::geometry::ray::Ray;
 use crate::geometry::shape::Shape;
@@ -59,15 +60,21 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     #[doc(hidden)]
     #[must_use]
     pub fn shoot_among(&self, ray: &Ray, among: u64) -> Option<SceneHit> {
-        self.nearest_among(ray, among, |_, shape| shape.hit_distance(ray))
+        self.nearest_among(ray, among, |_, shape| {
+            Some((shape.hit_distance(ray)?, None))
+        })
     }
 
     /// [`Scene::shoot_among`] for a ray from `eye.origin()`, with what all such rays share
     /// worked out once: the same hit, for less.
     pub(crate) fn shoot_from_eye(&self, ray: &Ray, among: u64, eye: &Eye<N>) -> Option<SceneHit> {
         self.nearest_among(ray, among, |index, shape| match shape {
-            Shape::Plane(plane) => plane.hit_distance_from(ray, eye.numerator(index)),
-            Shape::Sphere(sphere) => sphere.hit_distance(ray),
+            Shape::Plane(plane) => {
+                let num = eye.numerator(index);
+                let hit = plane.hit_from(ray, num)?;
+                Some((hit.t, Some(hit)))
+            }
+            Shape::Sphere(sphere) => Some((sphere.hit_distance(ray)?, None)),
         })
     }
 
@@ -80,32 +87,29 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         eye: &Eye<N>,
     ) -> Option<SceneHit> {
         let hit = match self.objects().get(index)?.shape {
-            Shape::Plane(plane) => {
-                let num = eye.numerator(index);
-                let t = plane.hit_distance_from(ray, num)?;
-                plane.hit_at_from(ray, t, num)
-            }
+            Shape::Plane(plane) => plane.hit_from(ray, eye.numerator(index))?,
             Shape::Sphere(sphere) => sphere.hit_at(ray, sphere.hit_distance(ray)?),
         };
         Some(SceneHit { hit, object: index })
     }
 
     /// The nearest hit among the objects of `among` (see [`Scene::shoot_among`]), with
-    /// `distance(index, shape)` giving each one's `t`.
+    /// `distance(index, shape)` giving each one's `t`, and its whole hit where that came at no
+    /// extra cost (a plane's point is found before its distance).
     #[inline]
     fn nearest_among(
         &self,
         ray: &Ray,
         among: u64,
-        distance: impl Fn(usize, &Shape) -> Option<Fx>,
+        distance: impl Fn(usize, &Shape) -> Option<(Fx, Option<Hit>)>,
     ) -> Option<SceneHit> {
         // Hits lie within FAR, so any hit is nearer than MAX.
-        let (mut best, mut nearest) = (Fx::MAX, usize::MAX);
+        let (mut best, mut nearest, mut known) = (Fx::MAX, usize::MAX, None);
         let mut try_object = |index: usize, object: &Object| {
-            if let Some(t) = distance(index, &object.shape)
+            if let Some((t, hit)) = distance(index, &object.shape)
                 && t < best
             {
-                (best, nearest) = (t, index);
+                (best, nearest, known) = (t, index, hit);
             }
         };
         // Only the set bits, lowest first: culled objects cost nothing.
@@ -118,7 +122,10 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         for (index, object) in self.objects().iter().enumerate().skip(64) {
             try_object(index, object);
         }
-        let hit = self.objects().get(nearest)?.shape.hit_at(ray, best);
+        let hit = match known {
+            Some(hit) => hit,
+            None => self.objects().get(nearest)?.shape.hit_at(ray, best),
+        };
         Some(SceneHit {
             hit,
             object: nearest,

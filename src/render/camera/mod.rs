@@ -560,8 +560,8 @@ impl Camera {
     pub fn ray(&self, x: u32, y: u32) -> Ray {
         // The ray budget keeps the screen at least a Q16.16 step in front of the eye, and
         // pixel centres off the screen are farther from the eye, so p is never zero.
-        let dir = self.towards(x, y).normalize_or_zero();
-        Ray::new_unchecked(self.eye, dir)
+        let towards = self.towards(x, y);
+        Ray::along(self.eye, towards.normalize_or_zero(), towards)
     }
 
     /// From the eye towards the centre of pixel (`row`, 0), unnormalised: with
@@ -589,7 +589,7 @@ impl Camera {
     /// [`Camera::ray`] for a direction from [`Camera::row_start`].
     pub(crate) fn ray_along(&self, towards: Vec3, square: u64) -> Ray {
         let dir = towards.normalize_with_square(square);
-        Ray::new_unchecked(self.eye, dir.unwrap_or(Vec3::ZERO))
+        Ray::along(self.eye, dir.unwrap_or(Vec3::ZERO), towards)
     }
 
     /// The unit normal of the plane through the eye that holds every ray of display row
@@ -639,10 +639,8 @@ impl Camera {
     /// [`Camera::ray`]. Like it, every `u32` column and row is allowed.
     #[must_use]
     pub fn sample_ray(&self, x: u32, y: u32, sx: u8, sy: u8, n: u8) -> Ray {
-        let dir = self
-            .towards_sample(x, y, sx, sy, n.clamp(1, 16))
-            .normalize_or_zero();
-        Ray::new_unchecked(self.eye, dir)
+        let towards = self.towards_sample(x, y, sx, sy, n.clamp(1, 16));
+        Ray::along(self.eye, towards.normalize_or_zero(), towards)
     }
 }
 
