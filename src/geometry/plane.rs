@@ -179,13 +179,15 @@ impl Plane {
     /// # Ok::<(), fixray::Error>(())
     /// ```
     #[must_use]
+    // Out of line: secondary rays, shadow rays and the plain path share one copy.
+    #[inline(never)]
     pub fn intersect(&self, ray: &Ray) -> Option<Hit> {
         self.hit_from(ray, &self.numerator(ray.origin))
     }
 
     /// The `t` of [`Plane::intersect`] alone, without the hit's normal.
     pub(crate) fn hit_distance(&self, ray: &Ray) -> Option<Fx> {
-        self.hit_distance_from(ray, &self.numerator(ray.origin))
+        Some(self.intersect(ray)?.t)
     }
 
     /// `−n·(p_r − p0)`, the numerator of Eq. 4.2, exactly in Q32.32: it depends on the
@@ -202,11 +204,6 @@ impl Plane {
         }
     }
 
-    /// [`Plane::hit_distance`] given `num`, which must be `self.numerator(ray.origin)`.
-    pub(crate) fn hit_distance_from(&self, ray: &Ray, num: &Numerator) -> Option<Fx> {
-        Some(self.hit_from(ray, num)?.t)
-    }
-
     /// [`Plane::intersect`] given `num`, which must be `self.numerator(ray.origin)`. Out of
     /// line: the plain path, the run loops and the shadow rays share one copy.
     #[inline(never)]
@@ -218,16 +215,6 @@ impl Plane {
             point,
             normal: self.facing(num),
         })
-    }
-
-    /// The hit of `ray` at distance `t`, which [`Plane::hit_distance`] found for it: the
-    /// same hit as [`Plane::intersect`].
-    pub(crate) fn hit_at(&self, ray: &Ray, t: Fx) -> Hit {
-        match self.intersect(ray) {
-            Some(hit) => hit,
-            // Not reached: `t` came from a hit.
-            None => Hit::facing(t, ray.at(t), self.normal, ray.dir),
-        }
     }
 
     /// The offset `s·w` from the origin of `num` (see [`Plane::numerator`]) to where a ray
@@ -277,10 +264,19 @@ impl Plane {
 
 /// Whether a hit at `s·w`, `s = scale`, on a ray whose `‖w‖²` is `square` (Q32.32) lies
 /// within [`FAR`]: `square ≤ far_reach(scale)`.
+///
+/// Most hits lie well inside: where `square < 2^b` with `b + 63 ≤ 58 + 2·shift`, the product
+/// `square · m²` is below half of `2^(58 + 2·shift)` (as `m² < 2⁶²`), so `square` is below
+/// half the exact reach, and so below `far_reach`, which lies within 2⁻²⁵ of it. That is
+/// decided by a bit length, without the reciprocal.
 #[inline]
 pub(crate) fn within_far(scale: Scale, square: u64) -> bool {
-    square <= far_reach(scale)
+    (fx::bit_length(square) as i32 + 63 <= FAR_SQUARED_BITS + 2 * scale.shift)
+        || square <= far_reach(scale)
 }
+
+/// FAR² is `2^FAR_SQUARED_BITS` in Q32.32.
+const FAR_SQUARED_BITS: i32 = 2 * (FAR.to_bits().trailing_zeros() as i32);
 
 /// The largest `‖w‖²` (Q32.32) for which a hit at `s·w`, `s = scale`, counts as within
 /// [`FAR`]: `(FAR/s)²`, as `2^(58 + 2·shift) / m²` (FAR is 2²⁹ raw units) with `1/m` from
@@ -292,7 +288,6 @@ pub(crate) fn within_far(scale: Scale, square: u64) -> bool {
 /// below 2⁻¹⁶, shorter than any ray's direction.
 #[inline]
 pub(crate) fn far_reach(scale: Scale) -> u64 {
-    const FAR_SQUARED_BITS: i32 = 2 * (FAR.to_bits().trailing_zeros() as i32);
     if scale.shift <= 0 {
         return 0;
     }

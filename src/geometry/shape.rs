@@ -19,8 +19,10 @@ impl Shape {
     /// The first hit of `ray` on this shape, if any.
     #[must_use]
     pub fn intersect(&self, ray: &Ray) -> Option<Hit> {
-        let t = self.hit_distance(ray)?;
-        Some(self.hit_at(ray, t))
+        match self {
+            Shape::Plane(p) => p.intersect(ray),
+            Shape::Sphere(s) => s.intersect(ray),
+        }
     }
 
     /// The distance `t` to the first hit alone: what finding the nearest object and testing
@@ -32,11 +34,15 @@ impl Shape {
         }
     }
 
-    /// The hit at distance `t` along `ray`: the point and normal, for the nearest object only.
-    pub(crate) fn hit_at(&self, ray: &Ray, t: Fx) -> Hit {
+    /// The hit at distance `t` along `ray`, which [`Shape::hit_distance`] found for it: the
+    /// point and normal, for the nearest object only. (A plane's hit is found with its
+    /// distance, and is made again here.) Out of line, as it was before planes were met
+    /// along `w`: the compiler otherwise copies it into every loop that finds a nearest hit.
+    #[inline(never)]
+    pub(crate) fn hit_at(&self, ray: &Ray, t: Fx) -> Option<Hit> {
         match self {
-            Shape::Plane(p) => p.hit_at(ray, t),
-            Shape::Sphere(s) => s.hit_at(ray, t),
+            Shape::Plane(p) => p.intersect(ray),
+            Shape::Sphere(s) => Some(s.hit_at(ray, t)),
         }
     }
 }

@@ -232,10 +232,11 @@ pub(crate) enum Cast<'a> {
 ///
 /// With `skip_empty`, a run in which no object can be hit is handed over whole and without
 /// rays, as `each(first, end, Cast::Empty, shadowers)`: `render_row` paints a plain sky so,
-/// which needs no ray. With `matte`, a run that can meet one matte plane only hands over
-/// its hits as [`Cast::Matte`], without rays (a miss still comes with its ray): the
-/// point where a ray meets a plane needs only the direction towards the pixel, not the unit
-/// one (`Plane::offset_along`), and shading a matte surface needs neither.
+/// which needs no ray. With `matte`, a run that can meet one matte plane only, on a row
+/// parallel to it, hands over its hits as [`Cast::Matte`], without rays (a miss still comes
+/// with its ray): the point where a ray meets a plane needs only the direction towards the
+/// pixel, not the unit one (`Plane::offset_along`), and shading a matte surface needs
+/// neither.
 fn cast_row<const N: usize, const L: usize>(
     scene: &Scene<N, L>,
     camera: &Camera,
@@ -259,17 +260,12 @@ fn cast_row<const N: usize, const L: usize>(
         // the nearest of one is that one, and the loop has no set of objects to walk.
         if here.is_power_of_two() && scene.objects().len() <= 64 {
             let index = here.trailing_zeros() as usize;
-            if matte && let Some(plane) = matte_plane(scene, index) {
-                let towards = runs.towards(first);
-                cast_matte_run(
-                    camera,
-                    &plane,
-                    index,
-                    eye.numerator(index),
-                    towards,
-                    first..end,
-                    &mut each,
-                );
+            if matte
+                && let Some(plane) = matte_plane(scene, index)
+                && plane.normal().dot_wide_exact(camera.column_step()) == 0
+            {
+                let (num, towards) = (eye.numerator(index), runs.towards(first));
+                cast_matte_run(camera, (&plane, index), num, towards, first..end, &mut each);
                 continue;
             }
             let shoot = |ray: &Ray| scene.shoot_one_from_eye(ray, index, eye);
@@ -322,45 +318,38 @@ fn cast_run(
 }
 
 /// [`cast_run`] for a run that can meet one matte plane only, object `index` (`plane`), whose
-/// numerator for rays from the eye is `num`: each hit is handed over as [`Cast::Matte`],
-/// without a ray, and each miss with its ray.
+/// numerator for rays from the eye is `num`, on a row whose column step is parallel to the
+/// plane (`n·r = 0`: a level camera over a level floor): each hit is handed over as
+/// [`Cast::Matte`], without a ray, and each miss with its ray.
 ///
-/// The hit is `Plane::offset_along` the direction towards the pixel, bit for bit. On a row
-/// whose column step is parallel to the plane (`n·r = 0`, a level camera over a level
-/// floor), `n·w` and so the plane's scale `s` are the same for every column: the division,
-/// and the bound on `‖w‖²` that [`FAR`](crate::FAR) sets, are worked out once, and each
-/// offset `s·w` is carried along the row by exact additions of `s·r`.
+/// Along such a row `n·w` does not change, and so neither does the plane's scale `s`: the
+/// division, and the bound on `‖w‖²` that [`FAR`](crate::FAR) sets (`plane::far_reach`), are
+/// worked out once, and each offset `s·w` is carried along the row by exact additions of
+/// `s·r`. The hits are `Plane::offset_along`'s, bit for bit.
 #[inline(never)]
 fn cast_matte_run(
     camera: &Camera,
-    plane: &Plane,
-    index: usize,
+    (plane, index): (&Plane, usize),
     num: &Numerator,
     mut towards: Vec3,
     cols: Range<u16>,
     each: &mut impl FnMut(u16, u16, Cast<'_>),
 ) {
-    let eye = camera.eye();
-    let step = camera.column_step();
+    let (eye, step) = (camera.eye(), camera.column_step());
     let normal = plane.facing(num);
     let mut square = RowSquares::new(towards, step);
-    let n = plane.normal();
-    // A level row: the bound on ‖w‖² and the carried offsets. Where the plane is not ahead
-    // of the row, nothing is within reach.
-    let level = (n.dot_wide_exact(step) == 0).then(|| {
-        let scale = plane.scale_along(num, n.dot_wide_exact(towards));
-        let reach = scale.map_or(0, far_reach);
-        let scale = scale.unwrap_or(Scale { m: 0, shift: 1 });
-        (reach, Offsets::new(scale, towards, step))
-    });
-    let mut level = level;
+    // Where the plane is not ahead of the row, nothing is within reach.
+    let scale = plane.scale_along(num, plane.normal().dot_wide_exact(towards));
+    let reach = scale.map_or(0, far_reach);
+    let mut offsets = Offsets::new(scale.unwrap_or(Scale { m: 0, shift: 1 }), towards, step);
     for col in cols {
         let s = square.now(towards);
-        let offset = match &level {
-            Some((reach, offsets)) => (s <= *reach).then(|| offsets.now()),
-            None => plane.offset_along(num, towards, s),
+        let hit = if s <= reach {
+            plane.bounded_at(eye.plus(offsets.now()))
+        } else {
+            None
         };
-        match offset.and_then(|offset| plane.bounded_at(eye.plus(offset))) {
+        match hit {
             Some(point) => each(col, col + 1, Cast::Matte(index, point, normal)),
             None => {
                 let ray = camera.ray_along(towards, s);
@@ -369,9 +358,7 @@ fn cast_matte_run(
         }
         towards = towards.plus(step);
         square.step();
-        if let Some((_, offsets)) = &mut level {
-            offsets.step();
-        }
+        offsets.step();
     }
 }
 

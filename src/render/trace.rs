@@ -69,7 +69,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         // Distances first; a sphere's hit point and normal only for the nearest.
         let hit = match known {
             Some(hit) => hit,
-            None => self.objects().get(nearest)?.shape.hit_at(ray, best),
+            None => self.objects().get(nearest)?.shape.hit_at(ray, best)?,
         };
         Some(SceneHit {
             hit,
@@ -454,8 +454,8 @@ impl<const N: usize, const L: usize> Scene<N, L> {
 }
 
 /// Where `ray` meets `shape`: its distance, and for a plane the whole hit, which costs no
-/// more.
-#[inline(always)]
+/// more. Out of line: the two loops of the secondary rays share it.
+#[inline(never)]
 fn distance(ray: &Ray, shape: &Shape) -> Option<(Fx, Option<Hit>)> {
     match shape {
         Shape::Plane(plane) => {

@@ -124,7 +124,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         }
         let hit = match known {
             Some(hit) => hit,
-            None => self.objects().get(nearest)?.shape.hit_at(ray, best),
+            None => self.objects().get(nearest)?.shape.hit_at(ray, best)?,
         };
         Some(SceneHit {
             hit,

@@ -17,7 +17,6 @@
 use crate::geometry::plane::Plane;
 use crate::geometry::shape::Shape;
 use crate::numbers::fx::{FAR, Fx};
-use crate::numbers::reciprocal::div_q16;
 use crate::numbers::vec3::Vec3;
 use crate::scene::Scene;
 
@@ -141,14 +140,17 @@ fn far_from_row<const N: usize, const L: usize>(
     Some(ruled_out)
 }
 
-/// `num / den` for positive `den`, rounded up by a unit (the reciprocal's rounding), or `None`
-/// from 1 up: an angle that wide rules nothing out.
+/// `num / den` for positive `den`, rounded up, or `None` from 1 up: an angle that wide rules
+/// nothing out. Once a row and light: a plain division.
 fn quotient(num: Fx, den: Fx) -> Option<Fx> {
     let (num, den) = (num.to_bits(), den.to_bits());
     if num < 0 || den <= 0 || num >= den {
         return None;
     }
-    Some(Fx::from_bits(div_q16(num as u64, den as u64) as i32 + 1))
+    // Below 2¹⁶, as num < den.
+    Some(Fx::from_bits(
+        (((num as u64) << 16).div_ceil(den as u64)) as i32,
+    ))
 }
 
 #[cfg(test)]
