@@ -362,50 +362,66 @@ fn cast_matte_run(
     }
 }
 
-/// `s·w` along a row, `w` stepping by `r`: `plane::offset``(scale, w)` for each column, carried
+/// `s·w` along a row, `w` stepping by `r`: `plane::offset(scale, w)` for each column, carried
 /// as the exact products `w·m` (below 2⁶¹: `w` within the ray budget, `m` below 2³¹), to
-/// which each column adds `r·m`, rounded at each column as `offset` rounds.
+/// which each column adds `r·m`, and rounded as `offset` rounds. A component along which the
+/// row does not move (`r`'s is 0: two of three for a camera looking along an axis) keeps its
+/// rounded value.
 struct Offsets {
     products: [i64; 3],
     steps: [i64; 3],
-    shift: i32,
+    offset: [i32; 3],
+    shift: u32,
 }
 
 impl Offsets {
     fn new(scale: Scale, start: Vec3, step: Vec3) -> Self {
         let m = scale.m as i64;
+        // Past 63 every offset rounds to 0, and stays there (`offset` says why).
+        let (m, shift) = match scale.shift {
+            shift @ 1..64 => (m, shift as u32),
+            _ => (0, 1),
+        };
         let p = |c: Fx| c.to_bits() as i64 * m;
-        Offsets {
-            products: [p(start.x), p(start.y), p(start.z)],
+        let products = [p(start.x), p(start.y), p(start.z)];
+        let mut offsets = Offsets {
+            products,
             steps: [p(step.x), p(step.y), p(step.z)],
-            shift: scale.shift,
-        }
+            offset: [0; 3],
+            shift,
+        };
+        offsets.offset = products.map(|p| offsets.round(p));
+        offsets
     }
 
-    /// `offset(scale, w)` for the current `w`: `⌊(w·m + 2^(shift−1)) / 2^shift⌋`, which is
-    /// what `fx::mul_shift_round` gives for shifts up to 63; beyond, zero.
+    /// `⌊(w·m + 2^(shift−1)) / 2^shift⌋`: what `fx::mul_shift_round` gives.
+    #[inline]
+    fn round(&self, product: i64) -> i32 {
+        ((product + (1 << (self.shift - 1))) >> self.shift) as i32
+    }
+
+    /// `offset(scale, w)` for the current `w`.
     #[inline]
     fn now(&self) -> Vec3 {
-        let shift = self.shift;
-        let c = |p: i64| {
-            Fx::from_bits(if (1..64).contains(&shift) {
-                ((p + (1 << (shift - 1))) >> shift) as i32
-            } else {
-                0
-            })
-        };
-        Vec3::new(
-            c(self.products[0]),
-            c(self.products[1]),
-            c(self.products[2]),
-        )
+        let [x, y, z] = self.offset.map(Fx::from_bits);
+        Vec3::new(x, y, z)
     }
 
     #[inline]
     fn step(&mut self) {
-        for (p, s) in self.products.iter_mut().zip(self.steps) {
-            *p = p.wrapping_add(s);
-        }
+        let (shift, half) = (self.shift, 1i64 << (self.shift - 1));
+        let step = |product: &mut i64, step: i64, offset: &mut i32| {
+            if step != 0 {
+                *product = product.wrapping_add(step);
+                *offset = ((*product + half) >> shift) as i32;
+            }
+        };
+        let [px, py, pz] = &mut self.products;
+        let [sx, sy, sz] = self.steps;
+        let [ox, oy, oz] = &mut self.offset;
+        step(px, sx, ox);
+        step(py, sy, oy);
+        step(pz, sz, oz);
     }
 }
 
