@@ -139,17 +139,18 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         let mut traced: u16 = 0;
         while let Some(next) = waiting.pop() {
             if traced == Self::MAX_RAYS {
-                add(&mut sum, next.weight, self.background().along(next.ray.dir));
+                add(&mut sum, next.weight, self.background().along(next.dir));
                 continue;
             }
             traced += 1;
+            let ray = Ray::new_unchecked(next.origin, next.dir);
             let hit = match next.start {
-                Start::Off(object) => self.shoot_from(&next.ray, Some(object)),
-                Start::Within(sphere) => self.shoot_within(&next.ray, sphere),
+                Start::Off(object) => self.shoot_from(&ray, Some(object)),
+                Start::Within(sphere) => self.shoot_within(&ray, sphere),
             };
             let Some((h, object)) = hit.and_then(|h| Some((h, self.objects().get(h.object)?)))
             else {
-                add(&mut sum, next.weight, self.background().along(next.ray.dir));
+                add(&mut sum, next.weight, self.background().along(next.dir));
                 continue;
             };
             let within = match next.start {
@@ -158,19 +159,12 @@ impl<const N: usize, const L: usize> Scene<N, L> {
             };
             let exiting = self.exits(&h, within);
             let (point, normal) = (h.hit.point, h.hit.normal);
-            let light = self.local(
-                object,
-                h.object,
-                point,
-                normal,
-                Some(next.ray.dir),
-                &[!0; L],
-            );
+            let light = self.local(object, h.object, point, normal, Some(next.dir), &[!0; L]);
             add(&mut sum, next.weight, light);
             self.branch(
                 &mut sum,
                 &mut waiting,
-                next.ray.dir,
+                next.dir,
                 &h,
                 exiting,
                 next.weight,
@@ -285,7 +279,8 @@ impl<const N: usize, const L: usize> Scene<N, L> {
             return;
         }
         let next = Pending {
-            ray,
+            origin: ray.origin,
+            dir: ray.dir,
             start,
             weight,
             generation,
@@ -479,7 +474,10 @@ enum Start {
 /// A secondary ray waiting to be followed.
 #[derive(Clone, Copy)]
 struct Pending {
-    ray: Ray,
+    /// The ray, from `origin` along the unit `dir` (a secondary ray is made along its unit
+    /// direction, so that is all it needs).
+    origin: Vec3,
+    dir: Vec3,
     start: Start,
     /// The product of the weights on its path from the eye.
     weight: Fx,
