@@ -36,9 +36,7 @@ impl Shape {
 
     /// The hit at distance `t` along `ray`, which [`Shape::hit_distance`] found for it: the
     /// point and normal, for the nearest object only. (A plane's hit is found with its
-    /// distance, and is made again here.) Out of line, as it was before planes were met
-    /// along `w`: the compiler otherwise copies it into every loop that finds a nearest hit.
-    #[inline(never)]
+    /// distance, and is made again here.)
     pub(crate) fn hit_at(&self, ray: &Ray, t: Fx) -> Option<Hit> {
         match self {
             Shape::Plane(p) => p.intersect(ray),
