@@ -285,8 +285,9 @@ const FAR_SQUARED_BITS: i32 = 2 * (FAR.to_bits().trailing_zeros() as i32);
 /// `‖s·w‖ ≤ FAR`. One
 /// reciprocal, a square and a shift: a whole row that shares `s` shares the bound. A scale
 /// with no fractional bits (`shift ≤ 0`, `s ≥ 2²⁹`) reaches nothing: it would need `‖w‖`
-/// below 2⁻¹⁶, shorter than any ray's direction.
-#[inline]
+/// below 2⁻¹⁶, shorter than any ray's direction. Out of line: it is rarely needed per ray
+/// (see [`within_far`]).
+#[inline(never)]
 pub(crate) fn far_reach(scale: Scale) -> u64 {
     if scale.shift <= 0 {
         return 0;
