@@ -208,22 +208,17 @@ impl Plane {
     /// line: the plain path, the run loops and the shadow rays share one copy.
     #[inline(never)]
     pub(crate) fn hit_from(&self, ray: &Ray, num: &Numerator) -> Option<Hit> {
-        let offset = self.offset_along(num, ray.w, ray.w.length_squared_wide())?;
-        let point = self.bounded_at(ray.origin.plus(offset))?;
+        let square = ray.w.length_squared_wide();
+        let scale = self.scale_along(num, self.normal.dot_wide_exact(ray.w))?;
+        if !within_far(scale, square) {
+            return None;
+        }
+        let point = self.bounded_at(ray.origin.plus(offset(scale, ray.w)))?;
         Some(Hit {
-            t: distance(offset, ray.dir),
+            t: distance(scale, ray.w, ray.dir),
             point,
             normal: self.facing(num),
         })
-    }
-
-    /// The offset `s·w` from the origin of `num` (see [`Plane::numerator`]) to where a ray
-    /// along `w`, whose squared length is `square`, meets the unbounded plane, if it does
-    /// within [`FAR`]: [`Plane::intersect`]'s point less the ray's origin.
-    #[inline]
-    pub(crate) fn offset_along(&self, num: &Numerator, w: Vec3, square: u64) -> Option<Vec3> {
-        let scale = self.scale_along(num, self.normal.dot_wide_exact(w))?;
-        within_far(scale, square).then(|| offset(scale, w))
     }
 
     /// `s = −n·(p_r − p0) / (n·w)` for a direction `w` with `n·w = den` (exact, in Q32.32),
@@ -325,12 +320,27 @@ pub(crate) fn offset(scale: Scale, w: Vec3) -> Vec3 {
     Vec3::new(c(w.x), c(w.y), c(w.z))
 }
 
-/// The distance `t` along the unit direction `dir` to the point `offset` from the origin:
-/// `offset · dir`, rounded, and never negative.
+/// The distance `t` along the ray's unit direction `u` (`dir`) to the hit at `s·w`
+/// (`s = scale`): `s·(w·u)/‖u‖`, the distance to the hit's projection on the ray, which for
+/// a ray made along `u` (`w = u`) is the exact distance to where `u` meets the plane, as
+/// rounded here. `1/‖u‖` is `1 + (1 − u·u)/2` to 2⁻²⁸ (`u·u` is within 2⁻¹⁴ of 1); `w·u` is
+/// kept in Q32.32 until the product with `s`, rounded once. Never negative.
 #[inline]
-pub(crate) fn distance(offset: Vec3, dir: Vec3) -> Fx {
-    let along = offset.dot_wide_exact(dir);
-    Fx::from_bits(((along + (1 << 15)) >> 16).max(0) as i32)
+pub(crate) fn distance(scale: Scale, w: Vec3, dir: Vec3) -> Fx {
+    // Both exact: |w·u| < 2⁴⁷ (w within 2³⁰ a component), |1 − u·u| < 2¹⁹ in Q32.32.
+    let along = w.dot_wide_exact(dir);
+    let excess = (1i64 << 32) - dir.length_squared_wide() as i64;
+    let along = along + (((along >> 16) * excess) >> 17);
+    if along <= 0 || !(1..64).contains(&scale.shift) {
+        return Fx::ZERO;
+    }
+    // t in raw units is along·m·2^−(shift + 16): along's high part (below 2³¹) times m, and
+    // its low 16 bits times m shifted down, below 2⁶² + 2³¹ together.
+    let (high, low) = ((along >> 16) as u64, (along & 0xffff) as u64);
+    let m = scale.m as u64;
+    let product = high * m + ((low * m) >> 16);
+    let shift = scale.shift as u32;
+    Fx::from_bits(((product + (1 << (shift - 1))) >> shift) as i32)
 }
 
 /// A plane's numerator of Eq. 4.2 for rays from one origin ([`Plane::numerator`]), with its

@@ -235,7 +235,7 @@ pub(crate) enum Cast<'a> {
 /// which needs no ray. With `matte`, a run that can meet one matte plane only, on a row
 /// parallel to it, hands over its hits as [`Cast::Matte`], without rays (a miss still comes
 /// with its ray): the point where a ray meets a plane needs only the direction towards the
-/// pixel, not the unit one (`Plane::offset_along`), and shading a matte surface needs
+/// pixel, not the unit one (`Plane::intersect`), and shading a matte surface needs
 /// neither.
 fn cast_row<const N: usize, const L: usize>(
     scene: &Scene<N, L>,
@@ -325,7 +325,7 @@ fn cast_run(
 /// Along such a row `n·w` does not change, and so neither does the plane's scale `s`: the
 /// division, and the bound on `‖w‖²` that [`FAR`](crate::FAR) sets (`plane::far_reach`), are
 /// worked out once, and each offset `s·w` is carried along the row by exact additions of
-/// `s·r`. The hits are `Plane::offset_along`'s, bit for bit.
+/// `s·r`. The hits are `Plane::intersect`'s, bit for bit.
 #[inline(never)]
 fn cast_matte_run(
     camera: &Camera,
