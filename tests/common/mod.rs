@@ -1072,11 +1072,13 @@ fn check_plane_point(plane: &fixray::Plane, ray: &Ray, hit: &fixray::Hit) {
              for {ray:?}"
         );
     }
-    // t is the distance to the point along u_r.
+    // t is the distance to the point along u_r: `s·(w·u)/‖u‖`, rounded (half a unit), against
+    // the rounded point's `(x − p_r)·u_r` (each component of x within half a unit: up to
+    // `0.5·‖u‖₁ ≤ 0.87` units), and `1/‖u‖` is within `1.74·2⁻¹⁶` of 1 (`1.74·t` units).
     let d = ray.dir().to_f64();
     let dist = (0..3).map(|a| (x[a] - o[a]) * d[a]).sum::<f64>();
     assert!(
-        (dist - t).abs() <= unit * (1.0 + t * 1.74),
+        (dist - t).abs() <= unit * (1.4 + t * 1.75),
         "plane hit distance {t} is not (x − p_r)·u_r = {dist} for {ray:?}"
     );
 }
