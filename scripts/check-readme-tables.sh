@@ -42,31 +42,6 @@ block() { # name: the README's lines between the name's markers
         $0 == end {on = 0} on {print} $0 == start {on = 1}' "$readme"
 }
 
-# Cargo names the symbols of a path dependency (fixray, seen from firmware/) by a hash of its
-# path, and the linker lays out code in that order: the same source in another checkout can
-# pad the firmware to a few bytes more or less flash. Everything else is exact.
-flash_slack=64
-same_but_flash_layout() { # have, want: equal but for flash cells within flash_slack bytes
-    python3 - "$1" "$2" "$flash_slack" <<'PY'
-import sys
-have, want = (open(p).read().splitlines() for p in sys.argv[1:3])
-slack = int(sys.argv[3])
-def numbers(cell):
-    return [int(n.replace(" ", "")) for n in cell.split("/")]
-def close(a, b):
-    ca, cb = a.split("|"), b.split("|")
-    if len(ca) != 5 or len(cb) != 5 or ca[1] != cb[1] or ca[3] != cb[3]:
-        return False  # not a flash row (name | flash | RAM), or the name or RAM differs
-    try:
-        fa, fb = numbers(ca[2]), numbers(cb[2])
-    except ValueError:
-        return False
-    return len(fa) == len(fb) and all(abs(x - y) <= slack for x, y in zip(fa, fb))
-ok = len(have) == len(want) and all(a == b or close(a, b) for a, b in zip(have, want))
-sys.exit(0 if ok else 1)
-PY
-}
-
 stale=0
 for name in firmware-table accuracy-table; do
     if [[ $(grep -cxF -- "<!-- $name:start -->" "$readme") != 1 ||
@@ -82,9 +57,6 @@ for name in firmware-table accuracy-table; do
     if diff -u --label "README.md ($name)" --label "generated ($name)" \
         "$work/$name.have" "$work/$name.want" >"$work/$name.diff"; then
         echo "check-readme-tables: $name is current"
-    elif ((!fix)) && [[ $name == firmware-table ]] &&
-        same_but_flash_layout "$work/$name.have" "$work/$name.want"; then
-        echo "check-readme-tables: $name is current (flash within $flash_slack bytes)"
     elif ((fix)); then
         awk -v start="<!-- $name:start -->" -v end="<!-- $name:end -->" -v file="$work/$name.want" '
             $0 == start {print; while ((getline line < file) > 0) print line; skip = 1; next}

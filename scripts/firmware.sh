@@ -22,7 +22,7 @@
 # The chips, their QEMU machines and their names in tables are firmware/targets.tsv's lines;
 # the script checks that firmware/.cargo/config.toml's runners boot each target on its machine.
 # It installs nothing. It needs cargo with those Rust targets, their QEMU system emulators
-# and machines, and timeout, and says which are missing. The QEMU command lines
+# and machines, timeout and flock, and says which are missing. The QEMU command lines
 # (-icount shift=0, semihosting, a `timeout`) are the runners in firmware/.cargo/config.toml,
 # so `cargo run --release --target T --bin B` inside firmware/ runs one firmware exactly as
 # this script does. Each run's full output is kept in firmware/target/firmware-logs/.
@@ -97,6 +97,7 @@ need_command() { # command, how to get it
 need_command cargo "install Rust with rustup"
 need_command rustc "install Rust with rustup"
 need_command timeout "install coreutils"
+need_command flock "install util-linux"
 for qemu in $(printf '%s\n' "${qemu_of[@]}" | sort -u); do
     case $qemu in
         qemu-system-arm) need_command "$qemu" "apt-get install qemu-system-arm" ;;
@@ -134,17 +135,28 @@ done <<<"$host"
 
 # --- Build, run, compare -------------------------------------------------------------------
 
-# Source paths end up in the firmware (the locations of its panics), so its flash figure would
-# depend on where the checkout and cargo's registry lie: both are mapped to fixed names. The
-# remapping is added to each target's rustflags from .cargo/config.toml (cargo joins arrays).
+# The figures must not depend on where the checkout lies. fixray and its reference are path
+# dependencies outside the firmware's workspace, so cargo hashes their absolute path into their
+# crates' metadata, and that hash orders and partitions the code: the same sources built from
+# two checkouts differed by a few bytes of flash, a few of stack and a tenth of an instruction
+# a pixel. So the firmware is built through a link of fixed name to this checkout, held under
+# a lock while this script runs (another checkout's run waits). Source paths also end up in the
+# firmware (the locations of its panics): the link and cargo's registry are mapped to fixed
+# names, added to each target's rustflags from .cargo/config.toml (cargo joins arrays).
+link=/tmp/fixray-firmware-checkout
+exec 9>"$link.lock"
+flock 9
+ln -sfn "$root" "$link"
+manifest="$link/firmware/Cargo.toml"
 cargo_home=${CARGO_HOME:-$HOME/.cargo}
 remap() { # target: the --config value for it
     printf "target.%s.rustflags=['--remap-path-prefix=%s=/fixray','--remap-path-prefix=%s=/cargo']" \
-        "$1" "$root" "$cargo_home"
+        "$1" "$link" "$cargo_home"
 }
 
 for target in "${targets[@]}"; do
-    (cd "$firmware" && cargo build --quiet --release --target "$target" --config "$(remap "$target")" --bins)
+    (cd "$firmware" && cargo build --quiet --release --manifest-path "$manifest" \
+        --target "$target" --config "$(remap "$target")" --bins)
 done
 
 logs="$firmware/target/firmware-logs"
@@ -163,7 +175,7 @@ declare -A per_pixel_of flash_of ram_of # by "target renderer"
 names=()
 run_firmware() { # target, bin: runs one firmware under QEMU into $log; its exit status in $status
     status=0
-    (cd "$firmware" && cargo run --quiet --release --target "$1" \
+    (cd "$firmware" && cargo run --quiet --release --manifest-path "$manifest" --target "$1" \
         --config "$(remap "$1")" --bin "$2") \
         >"$log" 2>&1 || status=$?
 }
