@@ -34,12 +34,27 @@ impl Shape {
         }
     }
 
-    /// The hit at distance `t` along `ray`, which [`Shape::hit_distance`] found for it: the
-    /// point and normal, for the nearest object only. (A plane's hit is found with its
-    /// distance, and is made again here.)
-    pub(crate) fn hit_at(&self, ray: &Ray, t: Fx) -> Option<Hit> {
+    /// Where `ray` first meets this shape: its distance, and for a plane the whole hit, which
+    /// costs no more (a plane's point is found before its distance). A sphere's hit is made
+    /// for the nearest object only, by [`Shape::sphere_hit_at`]. Out of line: the nearest-hit
+    /// loops share one copy.
+    #[inline(never)]
+    pub(crate) fn meet(&self, ray: &Ray) -> Option<(Fx, Option<Hit>)> {
         match self {
-            Shape::Plane(p) => p.intersect(ray),
+            Shape::Plane(plane) => {
+                let hit = plane.intersect(ray)?;
+                Some((hit.t, Some(hit)))
+            }
+            Shape::Sphere(sphere) => Some((sphere.hit_distance(ray)?, None)),
+        }
+    }
+
+    /// The hit at distance `t` along `ray` on a sphere, whose distance came without it
+    /// ([`Shape::meet`], [`Sphere::hit_distance`]); `None` for a plane, whose hit comes with
+    /// its distance and is kept, never made again.
+    pub(crate) fn sphere_hit_at(&self, ray: &Ray, t: Fx) -> Option<Hit> {
+        match self {
+            Shape::Plane(_) => None,
             Shape::Sphere(s) => Some(s.hit_at(ray, t)),
         }
     }

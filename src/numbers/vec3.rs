@@ -256,7 +256,9 @@ impl Vec3 {
     }
 
     /// ‖self‖, truncated to Q16.16: `isqrt` of the exact Q32.32 square.
-    #[inline]
+    // Out of line: only set-up, row and shadow-set code takes a length, none a pixel, and
+    // it is long on chips without 64-bit multiplication.
+    #[inline(never)]
     #[must_use]
     pub const fn length(self) -> Fx {
         let root = isqrt(self.length_squared_wide());

@@ -258,22 +258,22 @@ fn cast_row<const N: usize, const L: usize>(
         let eye = runs.eye();
         // A run that can meet one object only (the open ground, most often) asks it alone:
         // the nearest of one is that one, and the loop has no set of objects to walk.
-        if here.is_power_of_two() && scene.objects().len() <= 64 {
-            let index = here.trailing_zeros() as usize;
-            if matte
-                && let Some(plane) = matte_plane(scene, index)
-                && plane.normal().dot_wide_exact(camera.column_step()) == 0
-            {
-                let (num, towards) = (eye.numerator(index), runs.towards(first));
-                cast_matte_run(camera, (&plane, index), num, towards, first..end, &mut each);
-                continue;
-            }
-            let shoot = |ray: &Ray| scene.shoot_one_from_eye(ray, index, eye);
-            cast_run(camera, runs.towards(first), first..end, shoot, &mut each);
-        } else {
-            let shoot = |ray: &Ray| scene.shoot_from_eye(ray, here, eye);
-            cast_run(camera, runs.towards(first), first..end, shoot, &mut each);
+        let one = (here.is_power_of_two() && scene.objects().len() <= 64)
+            .then(|| here.trailing_zeros() as usize);
+        if let Some(index) = one
+            && matte
+            && let Some(plane) = matte_plane(scene, index)
+            && plane.normal().dot_wide_exact(camera.column_step()) == 0
+        {
+            let (num, towards) = (eye.numerator(index), runs.towards(first));
+            cast_matte_run(camera, (&plane, index), num, towards, first..end, &mut each);
+            continue;
         }
+        let shoot = |ray: &Ray| match one {
+            Some(index) => scene.shoot_one_from_eye(ray, index, eye),
+            None => scene.shoot_from_eye(ray, here, eye),
+        };
+        cast_run(camera, runs.towards(first), first..end, shoot, &mut each);
     }
 }
 
@@ -397,7 +397,7 @@ impl Offsets {
     /// `⌊(w·m + 2^(shift−1)) / 2^shift⌋`: what `fx::mul_shift_round` gives.
     #[inline]
     fn round(&self, product: i64) -> i32 {
-        ((product + (1 << (self.shift - 1))) >> self.shift) as i32
+        round(product, self.shift)
     }
 
     /// `offset(scale, w)` for the current `w`.
@@ -409,11 +409,11 @@ impl Offsets {
 
     #[inline]
     fn step(&mut self) {
-        let (shift, half) = (self.shift, 1i64 << (self.shift - 1));
+        let shift = self.shift;
         let step = |product: &mut i64, step: i64, offset: &mut i32| {
             if step != 0 {
                 *product = product.wrapping_add(step);
-                *offset = ((*product + half) >> shift) as i32;
+                *offset = round(*product, shift);
             }
         };
         let [px, py, pz] = &mut self.products;
@@ -423,6 +423,12 @@ impl Offsets {
         step(py, sy, oy);
         step(pz, sz, oz);
     }
+}
+
+/// `⌊(product + 2^(shift−1)) / 2^shift⌋`, `shift` in 1..64: [`Offsets`]' rounding.
+#[inline(always)]
+fn round(product: i64, shift: u32) -> i32 {
+    ((product + (1 << (shift - 1))) >> shift) as i32
 }
 
 /// [`render_row`] with `n × n` supersampling: each pixel is the mean of `n²` rays through

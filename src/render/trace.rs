@@ -39,12 +39,21 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// larger than the hit point's rounding (which grows with distance) and would detach
     /// shadows from the objects that cast them.
     pub(crate) fn shoot_from(&self, ray: &Ray, leaving: Option<usize>) -> Option<SceneHit> {
-        self.nearest(ray, |index, shape| {
-            if Some(index) == leaving {
-                None
-            } else {
-                distance(ray, shape)
+        self.shoot_after(ray, leaving.map(Start::Off))
+    }
+
+    /// The nearest hit of a ray that starts as `start` says, or anywhere (`None`): a ray
+    /// leaving an object's surface skips that object ([`Scene::shoot_from`]); one that has
+    /// entered a sphere through its surface meets that sphere at the far crossing (see
+    /// `Sphere::exit_distance`), the others as any ray does. On a tie the object added
+    /// first wins. One loop for both, so that the secondary rays have one copy of it.
+    fn shoot_after(&self, ray: &Ray, start: Option<Start>) -> Option<SceneHit> {
+        self.nearest(ray, |index, shape| match (start, shape) {
+            (Some(Start::Off(from)), _) if from == index => None,
+            (Some(Start::Within(from)), Shape::Sphere(sphere)) if from == index => {
+                Some((sphere.exit_distance(ray), None))
             }
+            _ => shape.meet(ray),
         })
     }
 
@@ -69,7 +78,11 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         // Distances first; a sphere's hit point and normal only for the nearest.
         let hit = match known {
             Some(hit) => hit,
-            None => self.objects().get(nearest)?.shape.hit_at(ray, best)?,
+            None => self
+                .objects()
+                .get(nearest)?
+                .shape
+                .sphere_hit_at(ray, best)?,
         };
         Some(SceneHit {
             hit,
@@ -144,10 +157,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
             }
             traced += 1;
             let ray = Ray::new_unchecked(next.origin, next.dir);
-            let hit = match next.start {
-                Start::Off(object) => self.shoot_from(&ray, Some(object)),
-                Start::Within(sphere) => self.shoot_within(&ray, sphere),
-            };
+            let hit = self.shoot_after(&ray, Some(next.start));
             let Some((h, object)) = hit.and_then(|h| Some((h, self.objects().get(h.object)?)))
             else {
                 add(&mut sum, next.weight, self.background().along(next.dir));
@@ -288,16 +298,6 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         if generation > self.depth() || !waiting.push(next) {
             add(sum, weight, self.background().along(ray.dir));
         }
-    }
-
-    /// [`Scene::shoot`] for a ray that has entered sphere `within` through its surface: it
-    /// meets that sphere at the far crossing (see `Sphere::exit_distance`), the others as
-    /// any ray does. On a tie the object added first wins.
-    pub(crate) fn shoot_within(&self, ray: &Ray, within: usize) -> Option<SceneHit> {
-        self.nearest(ray, |index, shape| match shape {
-            Shape::Sphere(sphere) if index == within => Some((sphere.exit_distance(ray), None)),
-            shape => distance(ray, shape),
-        })
     }
 
     /// The light of object `index` (`object`) at `point`, whose normal there is `normal`,
@@ -445,19 +445,6 @@ impl<const N: usize, const L: usize> Scene<N, L> {
             }
         }
         false
-    }
-}
-
-/// Where `ray` meets `shape`: its distance, and for a plane the whole hit, which costs no
-/// more. Out of line: the two loops of the secondary rays share it.
-#[inline(never)]
-fn distance(ray: &Ray, shape: &Shape) -> Option<(Fx, Option<Hit>)> {
-    match shape {
-        Shape::Plane(plane) => {
-            let hit = plane.intersect(ray)?;
-            Some((hit.t, Some(hit)))
-        }
-        Shape::Sphere(sphere) => Some((sphere.hit_distance(ray)?, None)),
     }
 }
 

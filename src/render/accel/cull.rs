@@ -60,9 +60,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     #[doc(hidden)]
     #[must_use]
     pub fn shoot_among(&self, ray: &Ray, among: u64) -> Option<SceneHit> {
-        self.nearest_among(ray, among, |_, shape| {
-            Some((shape.hit_distance(ray)?, None))
-        })
+        self.nearest_among(ray, among, |_, shape| shape.meet(ray))
     }
 
     /// [`Scene::shoot_among`] for a ray from `eye.origin()`, with what all such rays share
@@ -124,7 +122,11 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         }
         let hit = match known {
             Some(hit) => hit,
-            None => self.objects().get(nearest)?.shape.hit_at(ray, best)?,
+            None => self
+                .objects()
+                .get(nearest)?
+                .shape
+                .sphere_hit_at(ray, best)?,
         };
         Some(SceneHit {
             hit,

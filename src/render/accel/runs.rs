@@ -102,6 +102,7 @@ impl<'a, const N: usize, const L: usize> Runs<'a, N, L> {
     }
 
     /// The next run: its first column, the column after its last, and the objects to try.
+    #[inline(never)]
     pub(crate) fn next_run(&mut self) -> Option<(u16, u16, u64)> {
         if self.col >= self.cols {
             return None;
@@ -147,21 +148,15 @@ impl<'a, const N: usize, const L: usize> Runs<'a, N, L> {
 /// `last`, misses a plane of unit normal `normal` and Eq. 4.2 numerator `numerator` by
 /// pointing away from it or along it.
 ///
-/// A ray hits only if the numerator is non-zero and `n·u` has its sign. Each component of a
-/// normalised direction `u` is within 2⁻¹⁶ of `w/‖w‖`, so `n·u` is within `‖n‖₁·2⁻¹⁶ < 2⁻¹⁵`
-/// of `n·w/‖w‖`, and `‖w‖ ≤ ‖w‖₁`: where `n·w > 2·‖w‖₁` (in raw units), `n·u > 0` for sure.
-/// `n·w` is linear along the run and `‖w‖₁` convex, so the ends decide, with twice the
-/// margin to spare.
+/// A ray from the eye along `w` meets the plane only where the numerator is not zero and
+/// `n·w` has its sign (`Plane::hit_from`, which takes both exactly). `n·w` is linear along
+/// the run, so where neither end has that sign no column between them has.
 fn misses_all(normal: Vec3, numerator: i64, first: Vec3, last: Vec3) -> bool {
-    if numerator == 0 {
-        return true; // the eye on the plane: every ray leaves it or runs along it
-    }
-    let margin = 4 * first.l1_raw().max(last.l1_raw());
     let (a, b) = (normal.dot_wide_exact(first), normal.dot_wide_exact(last));
-    if numerator < 0 {
-        a.min(b) > margin
-    } else {
-        a.max(b) < -margin
+    match numerator {
+        0 => true, // the eye on the plane: every ray leaves it or runs along it
+        ..0 => a.min(b) >= 0,
+        _ => a.max(b) <= 0,
     }
 }
 
