@@ -24,8 +24,10 @@
 # It installs nothing. It needs cargo with those Rust targets, their QEMU system emulators
 # and machines, timeout and flock, and says which are missing. The QEMU command lines
 # (-icount shift=0, semihosting, a `timeout`) are the runners in firmware/.cargo/config.toml,
-# so `cargo run --release --target T --bin B` inside firmware/ runs one firmware exactly as
-# this script does. Each run's full output is kept in firmware/target/firmware-logs/.
+# so `cargo run --release --target T --bin B` inside firmware/ runs one firmware as this
+# script does (the same pictures and much the same figures; the script's own build, below,
+# makes the figures independent of where the checkout lies). Each run's full output is kept
+# in firmware/target/firmware-logs/.
 #
 # Every run also writes the README's performance tables (instructions per pixel; flash and
 # RAM), as Markdown from this run's figures, to firmware/target/firmware-tables.md, which
@@ -144,9 +146,17 @@ done <<<"$host"
 # firmware (the locations of its panics): the link and cargo's registry are mapped to fixed
 # names, added to each target's rustflags from .cargo/config.toml (cargo joins arrays).
 link=/tmp/fixray-firmware-checkout
-exec 9>"$link.lock"
-flock 9
+exec 9>>"$link.lock"
+if ! flock -w 1800 9; then
+    echo "firmware.sh: $link.lock is held by another run for 30 minutes; giving up" >&2
+    exit 2
+fi
+[[ -L $link || ! -e $link ]] || { echo "firmware.sh: $link exists and is not a link" >&2; exit 2; }
 ln -sfn "$root" "$link"
+if [[ $(readlink "$link") != "$root" ]]; then
+    echo "firmware.sh: could not point $link at $root" >&2
+    exit 2
+fi
 manifest="$link/firmware/Cargo.toml"
 cargo_home=${CARGO_HOME:-$HOME/.cargo}
 remap() { # target: the --config value for it
@@ -156,7 +166,7 @@ remap() { # target: the --config value for it
 
 for target in "${targets[@]}"; do
     (cd "$firmware" && cargo build --quiet --release --manifest-path "$manifest" \
-        --target "$target" --config "$(remap "$target")" --bins)
+        --target "$target" --config "$(remap "$target")" --bins 9>&-)
 done
 
 logs="$firmware/target/firmware-logs"
@@ -176,7 +186,7 @@ names=()
 run_firmware() { # target, bin: runs one firmware under QEMU into $log; its exit status in $status
     status=0
     (cd "$firmware" && cargo run --quiet --release --manifest-path "$manifest" --target "$1" \
-        --config "$(remap "$1")" --bin "$2") \
+        --config "$(remap "$1")" --bin "$2" 9>&-) \
         >"$log" 2>&1 || status=$?
 }
 row() { printf '%-28s %-24s %-8s %12s %9s %7s %7s %7s %7s\n' "$@"; }

@@ -31,8 +31,9 @@
 //! Inputs are checked to lie within ±[`LIMIT`] (1024) and hits beyond [`FAR`] (8192) are
 //! misses, so hit points stay within ±9216 and every difference, squared length (below 2⁶¹)
 //! and dot product of the render path fits its integer type. Nothing in the render path wraps:
-//! [`Vec3`] arithmetic saturates, and divisions happen only where the divisor is known to be
-//! non-zero and the quotient known to fit. Out-of-range input is an [`Error`], not a wrapped
+//! [`Vec3`]'s operators saturate (the render path's own additions skip that check where the
+//! budget rules overflow out, and debug builds check that it does), and divisions happen only
+//! where the divisor is known to be non-zero and the quotient known to fit. Out-of-range input is an [`Error`], not a wrapped
 //! picture.
 //!
 //! Cameras keep `F² + R² ≤ 16 384·F` (view distance `F`, half-diagonal `R`, in pixels), so
@@ -51,7 +52,8 @@
 //!
 //! The source folders are the layers, each using only the ones above it:
 //! - `numbers/`: [`Fx`] and its exact products, integer square roots (`isqrt`), reciprocals
-//!   (a table-seeded reciprocal square root, and division by it), [`Vec3`].
+//!   (a table-seeded reciprocal square root, and a table-seeded reciprocal for division),
+//!   [`Vec3`].
 //! - `error.rs` and `check.rs`: the [`Error`] a refused value gets, and the set-up checks
 //!   that refuse it.
 //! - `geometry/`: the chapter's [`Ray`] (Eq. 4.1), [`Plane`] (Eq. 4.2) and [`Sphere`]

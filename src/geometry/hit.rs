@@ -5,8 +5,9 @@ use crate::numbers::vec3::Vec3;
 
 /// The first point where a ray meets a shape.
 ///
-/// The normal is the surface's unit normal on the side the ray came from (`n·u_r ≤ 0`): a
-/// plane is two-sided, and a sphere seen from outside has its outward normal, seen from inside
+/// The normal is the surface's unit normal on the side the ray came from (`n·u_r ≤ 0`; a
+/// plane decides the side by the direction the ray was made along, `n·w < 0`, which a
+/// grazing ray's rounded `u_r` may miss by its rounding): a plane is two-sided, and a sphere seen from outside has its outward normal, seen from inside
 /// its inward one. Shading, shadows and mirrors all work on that side of the surface.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Hit {
@@ -35,7 +36,9 @@ impl Hit {
         self.t
     }
 
-    /// The hit point `x = p_r + t·u_r`.
+    /// The hit point `x = p_r + t·u_r`, up to the rounding of `u_r`: a plane is met along the
+    /// direction the ray was made along (see [`Plane::intersect`](crate::Plane::intersect)),
+    /// and `t` is the distance of the point's projection on the ray.
     #[must_use]
     pub const fn point(&self) -> Vec3 {
         self.point

@@ -156,9 +156,9 @@ impl Plane {
     /// The hit is worked out along the direction the ray was made along, `w` (for a camera's
     /// ray, towards its pixel; for any other, `u_r` itself): the point is
     /// `p_r + s·w` with `s = −n·(p_r − p0) / (n·w)`, the same point as `p_r + t·u_r`, without
-    /// the rounding of `u_r` in it. `s` is a quotient of 28 bits and more, so the point is
-    /// within a unit of 2⁻¹⁶ and `t·2⁻²⁸` of the exact one; `t` is the distance along `u_r`
-    /// to it, `(x − p_r)·u_r`.
+    /// the rounding of `u_r` in it. `s` is a quotient good to 27 bits, so the point is
+    /// within a unit of 2⁻¹⁶ and `t·2⁻²⁷` of the exact one; `t` is the distance of its
+    /// projection on the ray, `s·(w·u_r)/‖u_r‖`.
     ///
     /// A ray parallel to the plane (`n·w = 0`), one whose hit lies behind its origin, one
     /// whose hit lies beyond [`FAR`] and one that starts on the plane (`n·(p_r − p0) = 0`
@@ -185,7 +185,8 @@ impl Plane {
         self.hit_from(ray, &self.numerator(ray.origin))
     }
 
-    /// The `t` of [`Plane::intersect`] alone, without the hit's normal.
+    /// The `t` of [`Plane::intersect`] alone (the whole hit is made: its point comes before
+    /// its distance).
     pub(crate) fn hit_distance(&self, ray: &Ray) -> Option<Fx> {
         Some(self.intersect(ray)?.t)
     }
@@ -287,9 +288,9 @@ pub(crate) fn far_reach(scale: Scale) -> u64 {
     if scale.shift <= 0 {
         return 0;
     }
-    // 1/m ≈ y · 2^−(30 + bits), y in (2³⁰, 2³¹]: 1/m² ≈ y² · 2^−(60 + 2·bits).
+    // 1/m ≈ y · 2^−(30 + bits), y in [2³⁰, 2³¹]: 1/m² ≈ y² · 2^−(60 + 2·bits).
     let (y, bits) = inverse(scale.m as u64);
-    let y = (y - 4) as u64; // y > 2³⁰
+    let y = (y - 4) as u64; // y ≥ 2³⁰
     let y2 = y * y;
     let exponent = FAR_SQUARED_BITS + 2 * scale.shift - 60 - 2 * bits as i32;
     if exponent >= 0 {

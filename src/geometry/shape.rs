@@ -25,8 +25,8 @@ impl Shape {
         }
     }
 
-    /// The distance `t` to the first hit alone: what finding the nearest object and testing
-    /// shadow rays need.
+    /// The distance `t` to the first hit alone: what testing shadow rays needs (a sphere's
+    /// without its point; a plane's from its whole hit, which costs no more).
     pub(crate) fn hit_distance(&self, ray: &Ray) -> Option<Fx> {
         match self {
             Shape::Plane(p) => p.hit_distance(ray),

@@ -92,7 +92,7 @@ const RECIPROCAL_KNOTS: [u32; 129] = {
 };
 
 /// `1/den` for `den > 0`, as `(y, bits)` with `den < 2^bits` and `2^bits/den ≈ y · 2⁻³⁰`:
-/// `den` is scaled into `δ ∈ [½, 1)`, and `y ∈ (2³⁰, 2³¹]` is `1/δ` in Q2.30 to about 2⁻²⁹.
+/// `den` is scaled into `δ ∈ [½, 1)`, and `y ∈ [2³⁰, 2³¹]` is `1/δ` in Q2.30 to about 2⁻²⁹.
 /// Newton's step for a reciprocal approaches it from below, but the step's truncated product
 /// `δ·y` can leave `y` up to 3 units above it (a test holds it below 4).
 // Out of line: a division and the bound on FAR share it, in every loop that meets planes.
@@ -139,7 +139,7 @@ impl Mantissa {
         }
     }
 
-    /// `self / den` for `den > 0`, to a relative 2⁻²⁸: `top · 2^(bits − 32)` times the
+    /// `self / den` for `den > 0`, to a relative 2⁻²⁷ (its test's bound): `top · 2^(bits − 32)` times the
     /// reciprocal `y · 2^(−30 − den_bits)`, whose product `q` lies in `[2⁶¹, 2⁶³)`, of which
     /// `m` keeps the high word: `m · 2^(bits − 30 − den_bits)`.
     #[inline]

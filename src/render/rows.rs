@@ -206,7 +206,8 @@ pub fn shoot_row_skipping<const N: usize, const L: usize>(
         false,
         |first, end, cast, _| match cast {
             Cast::Ray(ray, hit) => each(first.into(), ray, hit),
-            _ => empty(first.into()..end.into()),
+            Cast::Empty => empty(first.into()..end.into()),
+            Cast::Matte(..) => {} // not made: `matte` is false here
         },
     );
     Ok(())

@@ -54,8 +54,8 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     }
 
     /// The nearest hit among the objects whose bit is set in `among` (bit `i` for object `i`;
-    /// objects past the 64th are always tried). Distances first; the hit point and normal
-    /// only for the nearest.
+    /// objects past the 64th are always tried). Distances first, and a sphere's hit point and
+    /// normal only for the nearest (a plane's hit comes with its distance, and is kept).
     // Not stable API: for fixray's profiling firmware and tests, hidden from the docs.
     #[doc(hidden)]
     #[must_use]

@@ -147,7 +147,7 @@ fn quotient(num: Fx, den: Fx) -> Option<Fx> {
     if num < 0 || den <= 0 || num >= den {
         return None;
     }
-    // Below 2¹⁶, as num < den.
+    // At most 2¹⁶, as num < den.
     Some(Fx::from_bits(
         (((num as u64) << 16).div_ceil(den as u64)) as i32,
     ))
