@@ -72,8 +72,8 @@
 //! | --- | --- |
 //! | row buffer, `[Rgb; 320]` | 960 |
 //! | the [`Viewport`] (two references and a point, 32-bit target) | 16 |
-//! | stack below [`Viewport::render`], Cortex-M0, classic scene (the deepest) | 2 288 |
-//! | **total** | **about 3.3 KB** |
+//! | stack below [`Viewport::render`], Cortex-M0, classic scene (the deepest) | 3 312 |
+//! | **total** | **about 4.3 KB** |
 //!
 //! A framebuffer for the same display would take 230 400 bytes. The scene (`Scene<8>`, about
 //! 1 KB with its shadow cones) and camera (56 bytes) are the caller's, wherever it keeps
@@ -90,13 +90,14 @@
 //!
 //! | chip | [`Viewport::render`], one-row buffer | `picture::<Rgb565, 160>()?.draw` |
 //! | --- | ---: | ---: |
-//! | Cortex-M0 (`thumbv6m-none-eabi`) | 1 952 / 2 288 | 2 448 / 2 784 |
-//! | Cortex-M4F (`thumbv7em-none-eabihf`) | 1 448 / 1 780 | 1 952 / 2 284 |
-//! | RV32IMC (`riscv32imc-unknown-none-elf`) | 1 356 / 1 628 | 1 852 / 2 124 |
+//! | Cortex-M0 (`thumbv6m-none-eabi`) | 2 560 / 3 312 | 3 056 / 3 808 |
+//! | Cortex-M3 (`thumbv7m-none-eabi`) | 2 088 / 2 856 | 2 592 / 3 360 |
+//! | Cortex-M4F (`thumbv7em-none-eabihf`) | 2 080 / 2 860 | 2 584 / 3 364 |
+//! | RV32IMC (`riscv32imc-unknown-none-elf`) | 1 912 / 2 616 | 2 408 / 3 112 |
 //!
-//! The classic scene, with mirrors, highlights and three lights' shadows, takes the deepest
-//! path; a picture adds its row buffer (480 bytes at 160 columns) and a few words to the
-//! render below it. The render's buffer is the caller's and not counted, and nothing on the
+//! The classic scene, with mirrors, glass, highlights and three lights' shadows, takes the
+//! deepest path; a picture adds its row buffer (480 bytes at 160 columns) and a few words to
+//! the render below it. The render's buffer is the caller's and not counted, and nothing on the
 //! stack is sized by the picture, so other sizes take about the same. The display's
 //! `fill_contiguous` is included; it runs beside `render_row` rather than below it, so a real
 //! driver adds to the total only where it needs more than that branch. Nothing recurses:
