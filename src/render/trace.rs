@@ -157,7 +157,12 @@ impl<const N: usize, const L: usize> Scene<N, L> {
             }
             traced += 1;
             let ray = Ray::new_unchecked(next.origin, next.dir);
-            let hit = self.shoot_after(&ray, Some(next.start));
+            // A secondary ray may travel FAR from a point that is itself FAR from the eye: its
+            // hits are kept inside the budget every hit point keeps (±(LIMIT + FAR)), past
+            // which they are misses, so that the next ray starts inside it too.
+            let hit = self
+                .shoot_after(&ray, Some(next.start))
+                .filter(|h| h.hit.point.within_raw(HIT_REACH));
             let Some((h, object)) = hit.and_then(|h| Some((h, self.objects().get(h.object)?)))
             else {
                 add(&mut sum, next.weight, self.background().along(next.dir));
@@ -447,6 +452,10 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         false
     }
 }
+
+/// The farthest a hit point lies from the origin along any axis, in raw units: `LIMIT + FAR`
+/// (the overflow budget of the crate's docs).
+const HIT_REACH: i32 = crate::numbers::fx::LIMIT.to_bits() + crate::FAR.to_bits();
 
 /// Where a secondary ray starts, which decides how it meets the surface it leaves.
 #[derive(Clone, Copy)]

@@ -196,3 +196,48 @@ fn only_objects_that_cannot_shadow_a_receiver_are_skipped() {
         "the sets must leave objects out: {skipped}"
     );
 }
+
+/// Two mirrors face each other a unit apart, a floor and a ceiling, and a ray leaves the eye
+/// between them almost level: each bounce carries it about 7 300 further along −z, so its
+/// second hit (z ≈ −10 900) lies past the budget every hit point keeps (±(LIMIT + FAR)), and
+/// a third, from there, would test the sphere from beyond the overflow budget. Past the
+/// budget a secondary ray's hit is a miss: the picture is the one without the ceiling, whose
+/// mirror ray sees the sky. (Before that rule, debug builds stopped at the sphere test's
+/// bound, and a longer chain could wrap a hit point.)
+#[test]
+fn secondary_hits_stay_inside_the_budget() {
+    let mirror = Material::new(Rgb::new(90, 90, 90), 0.5, 0.0, 1, 0.9).unwrap();
+    let build = |ceiling: bool| {
+        let mut scene = lit_from_above();
+        scene.set_depth(Scene::<4>::MAX_DEPTH);
+        scene.set_shadows(false); // the ceiling would shade the floor
+        let floor = Plane::from_fx(Vec3::ZERO, Vec3::Y).unwrap();
+        scene.add_plane(floor, mirror).unwrap();
+        if ceiling {
+            let top = Plane::from_fx(Vec3::from_ints(0, 1, 0), -Vec3::Y).unwrap();
+            scene.add_plane(top, mirror).unwrap();
+        }
+        let ball = Sphere::from_fx(Vec3::from_ints(0, 5, -20), Fx::ONE).unwrap();
+        scene.add_sphere(ball, Rgb::WHITE).unwrap();
+        scene
+    };
+    let eye = Vec3::new(Fx::ZERO, Fx::from_num(0.5), Fx::ZERO);
+    let ray = Ray::new(eye, Vec3::new(Fx::ZERO, Fx::from_bits(-9), -Fx::ONE)).unwrap();
+    let (with, without) = (build(true), build(false));
+    let first = with.shoot(&ray).unwrap();
+    assert_eq!(first.object, 0, "the floor, first");
+    assert!(
+        first.hit.point.z < Fx::from_num(-3000),
+        "{:?}",
+        first.hit.point
+    );
+    // The ceiling is met from the floor's hit, within FAR of it, but past the budget.
+    // (Past LIMIT, as a secondary ray's origin may be: `Ray::new` would refuse it.)
+    let up = Vec3::new(Fx::ZERO, Fx::from_bits(9), -Fx::ONE);
+    let second = with
+        .shoot(&Ray::new_unchecked(first.hit.point, up))
+        .unwrap();
+    assert_eq!(second.object, 1, "the ceiling, from the floor");
+    assert!(second.hit.point.z < -(crate::numbers::fx::LIMIT + crate::FAR));
+    assert_eq!(with.trace(&ray), without.trace(&ray));
+}
