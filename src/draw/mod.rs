@@ -72,7 +72,7 @@
 //! | --- | --- |
 //! | row buffer, `[Rgb; 320]` | 960 |
 //! | the [`Viewport`] (two references and a point, 32-bit target) | 16 |
-//! | stack below [`Viewport::render`], Cortex-M0, classic scene (the deepest) | 3 312 |
+//! | stack below [`Viewport::render`], Cortex-M0, classic scene (the deepest) | 3 296 |
 //! | **total** | **about 4.3 KB** |
 //!
 //! A framebuffer for the same display would take 230 400 bytes. The scene (`Scene<8>`, about
@@ -90,10 +90,10 @@
 //!
 //! | chip | [`Viewport::render`], one-row buffer | `picture::<Rgb565, 160>()?.draw` |
 //! | --- | ---: | ---: |
-//! | Cortex-M0 (`thumbv6m-none-eabi`) | 2 560 / 3 312 | 3 056 / 3 808 |
-//! | Cortex-M3 (`thumbv7m-none-eabi`) | 2 088 / 2 856 | 2 592 / 3 360 |
-//! | Cortex-M4F (`thumbv7em-none-eabihf`) | 2 080 / 2 860 | 2 584 / 3 364 |
-//! | RV32IMC (`riscv32imc-unknown-none-elf`) | 1 912 / 2 616 | 2 408 / 3 112 |
+//! | Cortex-M0 (`thumbv6m-none-eabi`) | 2 560 / 3 296 | 3 056 / 3 792 |
+//! | Cortex-M3 (`thumbv7m-none-eabi`) | 2 088 / 2 832 | 2 592 / 3 336 |
+//! | Cortex-M4F (`thumbv7em-none-eabihf`) | 2 080 / 2 836 | 2 584 / 3 340 |
+//! | RV32IMC (`riscv32imc-unknown-none-elf`) | 1 912 / 2 584 | 2 408 / 3 080 |
 //!
 //! The classic scene, with mirrors, glass, highlights and three lights' shadows, takes the
 //! deepest path; a picture adds its row buffer (480 bytes at 160 columns) and a few words to
