@@ -385,20 +385,12 @@ impl Offsets {
         };
         let p = |c: Fx| c.to_bits() as i64 * m;
         let products = [p(start.x), p(start.y), p(start.z)];
-        let mut offsets = Offsets {
+        Offsets {
             products,
             steps: [p(step.x), p(step.y), p(step.z)],
-            offset: [0; 3],
+            offset: products.map(|p| round(p, shift)),
             shift,
-        };
-        offsets.offset = products.map(|p| offsets.round(p));
-        offsets
-    }
-
-    /// `⌊(w·m + 2^(shift−1)) / 2^shift⌋`: what `fx::mul_shift_round` gives.
-    #[inline]
-    fn round(&self, product: i64) -> i32 {
-        round(product, self.shift)
+        }
     }
 
     /// `offset(scale, w)` for the current `w`.
@@ -426,7 +418,8 @@ impl Offsets {
     }
 }
 
-/// `⌊(product + 2^(shift−1)) / 2^shift⌋`, `shift` in 1..64: [`Offsets`]' rounding.
+/// `⌊(product + 2^(shift−1)) / 2^shift⌋`, `shift` in 1..64: [`Offsets`]' rounding, what
+/// `fx::mul_shift_round` gives for the product `w·m`.
 #[inline(always)]
 fn round(product: i64, shift: u32) -> i32 {
     ((product + (1 << (shift - 1))) >> shift) as i32
