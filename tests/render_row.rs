@@ -136,3 +136,55 @@ fn scenes_past_64_objects_equal_their_pixels_traced_one_by_one() {
     assert!(seen[64], "the mirror");
     assert!(seen[65..].iter().filter(|&&s| s).count() > 20);
 }
+
+/// A room of matte planes, floor and ceiling, unbounded and far enough from the eye that the
+/// rows nearest the horizon meet them past `FAR`, under a sky gradient and three lights, with
+/// spheres between them that shadow both: each level camera's floor and ceiling rows are found
+/// and shaded whole (`accel/matte.rs`), and every pixel must be the one traced.
+#[test]
+fn matte_floors_and_ceilings_equal_their_pixels_traced_one_by_one() {
+    use fixray::{Background, Camera, Light, Material, Plane, Scene, Sphere};
+    let sky = Background {
+        top: Rgb::new(20, 40, 160),
+        bottom: Rgb::new(200, 220, 250),
+    };
+    let mut scene: Scene<6, 3> =
+        Scene::new(Light::new([-300.0, 60.0, 300.0], 0.8).unwrap(), 0.15, sky).unwrap();
+    for (position, intensity) in [([90.0, 40.0, -450.0], 0.7), ([0.0, 20.0, -120.0], 0.5)] {
+        scene
+            .add_light(Light::new(position, intensity).unwrap())
+            .unwrap();
+    }
+    let floor = Material::matte(Rgb::new(120, 150, 90))
+        .with_checker(25.0, Rgb::new(40, 60, 30))
+        .unwrap();
+    let level = |y: f32| Plane::new([0.0, y, 0.0], [0.0, 1.0, 0.0]).unwrap();
+    scene.add_plane(level(-90.0), floor).unwrap();
+    scene
+        .add_plane(level(75.0), Rgb::new(180, 170, 160))
+        .unwrap();
+    for (centre, r) in [
+        ([-30.0, -60.0, -180.0], 15.0),
+        ([40.0, 25.0, -300.0], 25.0),
+        ([0.0, 0.0, -600.0], 30.0),
+    ] {
+        let ball = Sphere::new(centre, r).unwrap();
+        scene.add_sphere(ball, Rgb::new(200, 60, 40)).unwrap();
+    }
+    let eyes = [
+        ([0.0, 0.0, 0.0], 0.0),
+        ([15.0, -20.0, 30.0], 25.0),
+        ([-45.0, 35.0, -75.0], 200.0),
+    ];
+    for (eye, yaw) in eyes {
+        let camera = Camera::orbit(eye, 0.001)
+            .yaw_degrees(yaw)
+            .size(Size::new(72, 54))
+            .build()
+            .unwrap();
+        for shadows in [true, false] {
+            scene.set_shadows(shadows);
+            rows_match_tracing_each_pixel(&scene, &camera);
+        }
+    }
+}

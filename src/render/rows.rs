@@ -4,12 +4,12 @@ use core::ops::Range;
 
 use crate::error::Error;
 use crate::framebuffer::Framebuffer;
-use crate::geometry::plane::{Numerator, Plane, far_reach};
+use crate::geometry::plane::Plane;
 use crate::geometry::ray::Ray;
 use crate::geometry::shape::Shape;
 use crate::numbers::fx::Fx;
-use crate::numbers::reciprocal::Scale;
 use crate::numbers::vec3::Vec3;
+use crate::render::accel::matte::MatteRun;
 use crate::render::accel::row_rays::RowSquares;
 use crate::render::accel::runs::Runs;
 use crate::render::camera::Camera;
@@ -55,46 +55,41 @@ pub fn render_row<const N: usize, const L: usize>(
         sky.is_some(),
         true,
         |first, end, cast, shadowers| {
-            paint(
-                scene,
-                out,
-                first as usize,
-                end as usize,
-                cast,
-                shadowers,
-                sky,
-            )
+            let cols = first as usize..end as usize;
+            paint((scene, camera), out, cols, cast, shadowers, sky)
         },
     );
     Ok(())
 }
 
-/// Paints what [`cast_row`] hands over for columns `first..end` into `out` (indexed from
-/// there): a shaded pixel, or a run of plain sky.
+/// Paints what [`cast_row`] hands over for columns `cols` into `out` (indexed from there): a
+/// shaded pixel, a matte run, or a run of plain sky.
 #[inline(always)]
 fn paint<const N: usize, const L: usize>(
-    scene: &Scene<N, L>,
+    (scene, camera): (&Scene<N, L>, &Camera),
     out: &mut [Rgb],
-    first: usize,
-    end: usize,
+    cols: Range<usize>,
     cast: Cast<'_>,
     shadowers: &[u32; L],
     sky: Option<Rgb>,
 ) {
     let light = match cast {
         Cast::Ray(ray, hit) => scene.radiance_among(ray, hit, shadowers),
-        Cast::Matte(object, point, normal) => {
-            scene.radiance_matte(object, point, normal, shadowers)
+        Cast::MatteRun(run) => {
+            if let Some(pixels) = out.get_mut(cols) {
+                scene.shade_matte_run(camera, run, shadowers, pixels);
+            }
+            return;
         }
         Cast::Empty => {
-            if let (Some(run), Some(sky)) = (out.get_mut(first..end), sky) {
+            if let (Some(run), Some(sky)) = (out.get_mut(cols), sky) {
                 run.fill(sky);
             }
             return;
         }
     };
-    if let Some(pixel) = out.get_mut(first) {
-        *pixel = crate::scene::linear::to_rgb(light);
+    if let Some(pixel) = out.get_mut(cols.start) {
+        *pixel = crate::scene::linear::rgb_of(light);
     }
 }
 
@@ -121,7 +116,7 @@ pub(crate) fn render_columns<const N: usize, const L: usize>(
         true,
         |first, end, cast, shadowers| {
             let (first, end) = ((first - offset) as usize, (end - offset) as usize);
-            paint(scene, out, first, end, cast, shadowers, sky);
+            paint((scene, camera), out, first..end, cast, shadowers, sky);
         },
     );
 }
@@ -207,7 +202,7 @@ pub fn shoot_row_skipping<const N: usize, const L: usize>(
         |first, end, cast, _| match cast {
             Cast::Ray(ray, hit) => each(first.into(), ray, hit),
             Cast::Empty => empty(first.into()..end.into()),
-            Cast::Matte(..) => {} // not made: `matte` is false here
+            Cast::MatteRun(_) => {} // not made: `matte` is false here
         },
     );
     Ok(())
@@ -219,10 +214,9 @@ pub(crate) enum Cast<'a> {
     Empty,
     /// A pixel's ray and its nearest hit.
     Ray(&'a Ray, Option<SceneHit>),
-    /// A pixel whose ray meets a matte plane, object `.0`, at `.1`, where its normal facing
-    /// the eye is `.2`: shaded without the ray, which is not made (see
-    /// `Scene::radiance_matte`).
-    Matte(usize, Vec3, Vec3),
+    /// A run that can meet one matte plane only, on a row parallel to it: found and shaded
+    /// whole, without rays ([`Scene::shade_matte_run`]).
+    MatteRun(&'a MatteRun<'a>),
 }
 
 /// The engine of [`shoot_row`] and [`render_row`]: the row's runs ([`Runs`]), and in each the
@@ -234,10 +228,10 @@ pub(crate) enum Cast<'a> {
 /// With `skip_empty`, a run in which no object can be hit is handed over whole and without
 /// rays, as `each(first, end, Cast::Empty, shadowers)`: `render_row` paints a plain sky so,
 /// which needs no ray. With `matte`, a run that can meet one matte plane only, on a row
-/// parallel to it, hands over its hits as [`Cast::Matte`], without rays (a miss still comes
-/// with its ray): the point where a ray meets a plane needs only the direction towards the
-/// pixel, not the unit one (`Plane::intersect`), and shading a matte surface needs
-/// neither.
+/// parallel to it, is handed over whole as [`Cast::MatteRun`], without rays: the point where
+/// a ray meets a plane needs only the direction towards the pixel, not the unit one
+/// (`Plane::intersect`), and shading a matte surface needs neither
+/// ([`Scene::shade_matte_run`]).
 fn cast_row<const N: usize, const L: usize>(
     scene: &Scene<N, L>,
     camera: &Camera,
@@ -266,8 +260,15 @@ fn cast_row<const N: usize, const L: usize>(
             && let Some(plane) = matte_plane(scene, index)
             && plane.normal().dot_wide_exact(camera.column_step()) == 0
         {
-            let (num, towards) = (eye.numerator(index), runs.towards(first));
-            cast_matte_run(camera, (&plane, index), num, towards, first..end, &mut each);
+            let num = eye.numerator(index);
+            let towards = runs.towards(first);
+            let run = MatteRun {
+                plane,
+                index,
+                num,
+                towards,
+            };
+            each(first, end, Cast::MatteRun(&run));
             continue;
         }
         let shoot = |ray: &Ray| match one {
@@ -316,113 +317,6 @@ fn cast_run(
         towards = towards.plus(camera.column_step());
         square.step();
     }
-}
-
-/// [`cast_run`] for a run that can meet one matte plane only, object `index` (`plane`), whose
-/// numerator for rays from the eye is `num`, on a row whose column step is parallel to the
-/// plane (`n·r = 0`: a level camera over a level floor): each hit is handed over as
-/// [`Cast::Matte`], without a ray, and each miss with its ray.
-///
-/// Along such a row `n·w` does not change, and so neither does the plane's scale `s`: the
-/// division, and the bound on `‖w‖²` that [`FAR`](crate::FAR) sets (`plane::far_reach`), are
-/// worked out once, and each offset `s·w` is carried along the row by exact additions of
-/// `s·r`. The hits are `Plane::intersect`'s, bit for bit.
-#[inline(never)]
-fn cast_matte_run(
-    camera: &Camera,
-    (plane, index): (&Plane, usize),
-    num: &Numerator,
-    mut towards: Vec3,
-    cols: Range<u16>,
-    each: &mut impl FnMut(u16, u16, Cast<'_>),
-) {
-    let (eye, step) = (camera.eye(), camera.column_step());
-    let normal = plane.facing(num);
-    let mut square = RowSquares::new(towards, step);
-    // Where the plane is not ahead of the row, nothing is within reach.
-    let scale = plane.scale_along(num, plane.normal().dot_wide_exact(towards));
-    let reach = scale.map_or(0, far_reach);
-    let mut offsets = Offsets::new(scale.unwrap_or(Scale { m: 0, shift: 1 }), towards, step);
-    for col in cols {
-        let s = square.now(towards);
-        let hit = if s <= reach {
-            plane.bounded_at(eye.plus(offsets.now()))
-        } else {
-            None
-        };
-        match hit {
-            Some(point) => each(col, col + 1, Cast::Matte(index, point, normal)),
-            None => {
-                let ray = camera.ray_along(towards, s);
-                each(col, col + 1, Cast::Ray(&ray, None));
-            }
-        }
-        towards = towards.plus(step);
-        square.step();
-        offsets.step();
-    }
-}
-
-/// `s·w` along a row, `w` stepping by `r`: `plane::offset(scale, w)` for each column, carried
-/// as the exact products `w·m` (below 2⁶¹: `w` within the ray budget, `m` below 2³¹), to
-/// which each column adds `r·m`, and rounded as `offset` rounds. A component along which the
-/// row does not move (`r`'s is 0: two of three for a camera looking along an axis) keeps its
-/// rounded value.
-struct Offsets {
-    products: [i64; 3],
-    steps: [i64; 3],
-    offset: [i32; 3],
-    shift: u32,
-}
-
-impl Offsets {
-    fn new(scale: Scale, start: Vec3, step: Vec3) -> Self {
-        let m = scale.m as i64;
-        // Past 63 every offset rounds to 0, and stays there (`offset` says why).
-        let (m, shift) = match scale.shift {
-            shift @ 1..64 => (m, shift as u32),
-            _ => (0, 1),
-        };
-        let p = |c: Fx| c.to_bits() as i64 * m;
-        let products = [p(start.x), p(start.y), p(start.z)];
-        Offsets {
-            products,
-            steps: [p(step.x), p(step.y), p(step.z)],
-            offset: products.map(|p| round(p, shift)),
-            shift,
-        }
-    }
-
-    /// `offset(scale, w)` for the current `w`.
-    #[inline]
-    fn now(&self) -> Vec3 {
-        let [x, y, z] = self.offset.map(Fx::from_bits);
-        Vec3::new(x, y, z)
-    }
-
-    #[inline]
-    fn step(&mut self) {
-        let shift = self.shift;
-        let step = |product: &mut i64, step: i64, offset: &mut i32| {
-            if step != 0 {
-                *product = product.wrapping_add(step);
-                *offset = round(*product, shift);
-            }
-        };
-        let [px, py, pz] = &mut self.products;
-        let [sx, sy, sz] = self.steps;
-        let [ox, oy, oz] = &mut self.offset;
-        step(px, sx, ox);
-        step(py, sy, oy);
-        step(pz, sz, oz);
-    }
-}
-
-/// `⌊(product + 2^(shift−1)) / 2^shift⌋`, `shift` in 1..64: [`Offsets`]' rounding, what
-/// `fx::mul_shift_round` gives for the product `w·m`.
-#[inline(always)]
-fn round(product: i64, shift: u32) -> i32 {
-    ((product + (1 << (shift - 1))) >> shift) as i32
 }
 
 /// [`render_row`] with `n × n` supersampling: each pixel is the mean of `n²` rays through

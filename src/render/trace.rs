@@ -15,7 +15,7 @@ use crate::scene::cone::ShadowCone;
 use crate::scene::hit::SceneHit;
 use crate::scene::light::Light;
 use crate::scene::linear::{Linear, channel_to_linear, powi};
-use crate::scene::{Object, Rgb, Scene};
+use crate::scene::{Material, Object, Rgb, Scene};
 
 impl<const N: usize, const L: usize> Scene<N, L> {
     /// `shade(shoot(ray))`: the colour of the pixel this ray passes through.
@@ -105,7 +105,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// the background, so its time is bounded too.
     #[must_use]
     pub fn shade(&self, ray: &Ray, hit: Option<&SceneHit>) -> Rgb {
-        crate::scene::linear::to_rgb(self.radiance(ray, hit.copied()))
+        crate::scene::linear::rgb_of(self.radiance(ray, hit.copied()))
     }
 
     /// The light arriving along `ray`, whose first hit is `hit`, in linear units.
@@ -305,24 +305,6 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         }
     }
 
-    /// The light of object `index` (`object`) at `point`, whose normal there is `normal`,
-    /// where nothing but its own surface is seen: a matte plane met by a ray from the eye,
-    /// which [`render_row`](crate::render_row) shades without making the ray (the same light
-    /// as [`Scene::radiance_among`] for it: a matte surface has no highlight, and no mirror or
-    /// refracted ray).
-    pub(crate) fn radiance_matte(
-        &self,
-        index: usize,
-        point: Vec3,
-        normal: Vec3,
-        plane_shadowers: &[u32; L],
-    ) -> Linear {
-        match self.objects().get(index) {
-            Some(object) => self.local(object, index, point, normal, None, plane_shadowers),
-            None => [Fx::ZERO; 3], // not reached: the index is a run's object
-        }
-    }
-
     /// The surface's own light where a ray along `view` met object `index` (`object`) at
     /// `point`, its normal there `normal`: ambient and diffuse times its colour, plus white
     /// highlights, from every light whose shadow ray reaches it. Only a highlight needs the
@@ -341,25 +323,16 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         let on_plane = matches!(object.shape, Shape::Plane(_));
         let (mut diffuse, mut specular) = (Fx::ZERO, Fx::ZERO);
         let mut light_up = |light_index: usize, light: &Light| {
-            let to_light = light.position.minus(point);
-            let distance_squared = to_light.length_squared_wide();
-            let Some(l) = to_light.normalize_with_square(distance_squared) else {
-                return;
-            };
-            let cos = normal.dot_exact(l);
-            if cos <= Fx::ZERO {
-                return;
-            }
-            if self.shadows() {
-                let shadow_ray = Ray::new_unchecked(point, l);
-                let among = match plane_shadowers.get(light_index) {
+            let among = self
+                .shadows()
+                .then(|| match plane_shadowers.get(light_index) {
                     Some(&set) if on_plane => set,
                     _ => !0,
-                };
-                if self.occluded(&shadow_ray, distance_squared, index, light_index, among) {
-                    return;
-                }
-            }
+                });
+            let Some((l, cos)) = self.reaches(light_index, light, (index, point, normal), among)
+            else {
+                return;
+            };
             diffuse = diffuse.saturating_add(fx::mul_unit(light.intensity, cos));
             if material.specular > Fx::ZERO
                 && let Some(dir) = view
@@ -379,20 +352,55 @@ impl<const N: usize, const L: usize> Scene<N, L> {
                 }
             }
         }
-        // Several lights and a specular weight up to 16 can exceed Q16.16's range: the sums
-        // saturate rather than wrap.
-        let k = self
-            .ambient()
-            .saturating_add(fx::mul(material.diffuse, diffuse));
-        let colour = object.colour_at(point);
-        // A channel is at most 1: its product with k needs no saturation.
-        let lit = |c: u8| fx::mul_fits(k, channel_to_linear(c));
-        let lit = [lit(colour.r), lit(colour.g), lit(colour.b)];
+        let lit = self.lit(material, diffuse, object.colour_at(point));
         if specular <= Fx::ZERO {
             return lit; // matte, or no highlight here: nothing to add
         }
         let highlight = fx::mul(material.specular, specular);
         lit.map(|c| c.saturating_add(highlight))
+    }
+
+    /// The ambient and diffuse light leaving a surface of `material` and `colour` that
+    /// receives `diffuse` from the lights (each light's intensity times its cosine, summed).
+    #[inline(always)]
+    pub(crate) fn lit(&self, material: &Material, diffuse: Fx, colour: Rgb) -> Linear {
+        // Several lights and a specular weight up to 16 can exceed Q16.16's range: the sums
+        // saturate rather than wrap.
+        let k = self
+            .ambient()
+            .saturating_add(fx::mul(material.diffuse, diffuse));
+        // A channel is at most 1: its product with k needs no saturation.
+        let lit = |c: u8| fx::mul_fits(k, channel_to_linear(c));
+        [lit(colour.r), lit(colour.g), lit(colour.b)]
+    }
+
+    /// Whether light `light_index` (`light`) reaches the surface of object `index` at
+    /// `point`, whose unit normal there is `normal`: the unit direction `l` towards it and the
+    /// cosine `n·l`, or `None` where it is at the point, does not face the surface, or — with
+    /// a shadow set `among` (see [`Scene::occluded`]), where shadows are on — is blocked.
+    // Out of line: every lit pixel's light, for the plain path and the matte runs alike.
+    #[inline(never)]
+    pub(crate) fn reaches(
+        &self,
+        light_index: usize,
+        light: &Light,
+        (index, point, normal): (usize, Vec3, Vec3),
+        among: Option<u32>,
+    ) -> Option<(Vec3, Fx)> {
+        let to_light = light.position.minus(point);
+        let distance_squared = to_light.length_squared_wide();
+        let l = to_light.normalize_with_square(distance_squared)?;
+        let cos = normal.dot_exact(l);
+        if cos <= Fx::ZERO {
+            return None;
+        }
+        if let Some(among) = among {
+            let shadow_ray = Ray::new_unchecked(point, l);
+            if self.occluded(&shadow_ray, distance_squared, index, light_index, among) {
+                return None;
+            }
+        }
+        Some((l, cos))
     }
 
     /// Whether anything but object `leaving` lies on `ray` closer than `√distance_squared`

@@ -42,7 +42,18 @@ impl Object {
 
     /// The surface colour at a hit point: the material's, or its checkerboard's on a plane.
     #[must_use]
+    #[inline]
     pub fn colour_at(&self, point: Vec3) -> Rgb {
+        match self.material.checker {
+            Some(_) => self.checkered_at(point),
+            None => self.material.colour,
+        }
+    }
+
+    /// [`Object::colour_at`] for a material with a checkerboard: out of line, since the plain
+    /// colour is the common case and every pixel's shading asks for one or the other.
+    #[inline(never)]
+    fn checkered_at(&self, point: Vec3) -> Rgb {
         match (self.material.checker, self.shape) {
             (Some(checker), Shape::Plane(plane)) => {
                 checker.colour_at(self.material.colour, plane.coords(point))

@@ -4,12 +4,15 @@
 //! - `runs`: a row cut into runs of columns that can meet the same objects (culling by the
 //!   row's plane, each sphere's column span, and planes every ray of a run points away from);
 //! - `shadow_rows`: the spheres that can shadow a row's hits on planes, from each light;
+//! - `matte`: a run that can meet one matte plane only, on a row parallel to it, found by
+//!   additions and shaded in one loop, without rays;
 //!
 //! The shadow rays' speed-ups, each light's cone around each sphere and the set of objects that
 //! can shadow each object from each light, are caches the scene keeps up to date as objects
 //! and lights are added: `scene/cone.rs` and `scene/shadowers.rs`.
 
 pub(crate) mod cull;
+pub(crate) mod matte;
 pub(crate) mod row_rays;
 pub(crate) mod runs;
 pub(crate) mod shadow_rows;

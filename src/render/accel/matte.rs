@@ -1,0 +1,174 @@
+//! [`Scene::shade_matte_run`]: a run of columns that can meet one matte plane only, on a row
+//! parallel to it — a level camera over a level floor, most of a typical frame — found and
+//! shaded in one loop.
+//!
+//! Along such a row `n·w` does not change, and so neither does the plane's scale `s` (Eq. 4.2
+//! along the direction towards the pixel, `Plane::hit_from`): the division, and the bound on
+//! `‖w‖²` that [`FAR`](crate::FAR) sets, are worked out once, and each hit `eye + s·w` is
+//! carried along the row by exact additions ([`Offsets`]). No ray is made for a hit: shading
+//! a matte surface needs neither its direction nor its distance. What the run's pixels share is
+//! worked out once too: the object and its facing normal, and for each light whether a shadow
+//! ray from the run can meet anything at all (on most rows of a floor nothing can, and no
+//! shadow ray is made). Each hit is then lit by the plain path's own arithmetic
+//! (`towards_light`, `Scene::occluded`, `Scene::lit`), so the pixels are bit for bit
+//! [`Scene::trace`]'s.
+
+use crate::geometry::plane::{Numerator, Plane, far_reach};
+use crate::numbers::fx::{self, Fx};
+use crate::numbers::reciprocal::Scale;
+use crate::numbers::vec3::Vec3;
+use crate::render::accel::row_rays::RowSquares;
+use crate::render::camera::Camera;
+use crate::scene::Scene;
+use crate::scene::colour::Rgb;
+use crate::scene::linear::{rgb_of, to_rgb};
+
+/// A run of columns whose rays can meet one matte plane only, object `index` (`plane`), whose
+/// numerator for rays from the eye is `num`, on a row whose column step is parallel to the
+/// plane (`n·r = 0`); the run's first ray is along `towards`.
+pub(crate) struct MatteRun<'a> {
+    pub(crate) plane: Plane,
+    pub(crate) index: usize,
+    pub(crate) num: &'a Numerator,
+    pub(crate) towards: Vec3,
+}
+
+impl<const N: usize, const L: usize> Scene<N, L> {
+    /// The colours of a [`MatteRun`]'s columns, one for each pixel of `out`, as
+    /// [`Scene::trace`] gives them for the camera's rays: where the plane is met, its matte
+    /// light, whose shadow rays towards light `i` try only the objects of
+    /// `plane_shadowers[i]` (see `accel/shadow_rows.rs`); elsewhere the background.
+    // Out of line: the loop of most floor pixels, kept whole and in one place.
+    #[inline(never)]
+    pub(crate) fn shade_matte_run(
+        &self,
+        camera: &Camera,
+        run: &MatteRun<'_>,
+        plane_shadowers: &[u32; L],
+        out: &mut [Rgb],
+    ) {
+        let (plane, index) = (&run.plane, run.index);
+        let Some(object) = self.objects().get(index) else {
+            return; // not reached: the run's object is one of the scene's
+        };
+        let (eye, step) = (camera.eye(), camera.column_step());
+        let normal = plane.facing(run.num);
+        // For each light, the set a shadow ray from the run tries, or `None` where it can
+        // meet nothing: `Scene::occluded` walks only the objects that can shadow this one
+        // from that light and are in the row's set (in scenes of up to 32 objects).
+        let shadowers = self.shadowers();
+        let mut shadow_sets = [None; L];
+        if self.shadows() {
+            for (light, test) in shadow_sets.iter_mut().enumerate() {
+                let among = plane_shadowers.get(light).copied().unwrap_or(!0);
+                let set = shadowers.get(light).and_then(|s| s.get(index)).copied();
+                let none = self.objects().len() <= 32 && set.is_some_and(|set| set & among == 0);
+                *test = (!none).then_some(among);
+            }
+        }
+        let sky = self.background().plain_colour();
+        let mut towards = run.towards;
+        let mut square = RowSquares::new(towards, step);
+        // Where the plane is not ahead of the row, nothing is within reach.
+        let scale = plane.scale_along(run.num, plane.normal().dot_wide_exact(towards));
+        let reach = scale.map_or(0, far_reach);
+        let mut offsets = Offsets::new(scale.unwrap_or(Scale { m: 0, shift: 1 }), towards, step);
+        for pixel in out.iter_mut() {
+            let s = square.now(towards);
+            let hit = if s <= reach {
+                plane.bounded_at(eye.plus(offsets.now()))
+            } else {
+                None
+            };
+            *pixel = match (hit, sky) {
+                (Some(point), _) => {
+                    let mut diffuse = Fx::ZERO;
+                    for (i, (light, &test)) in self.lights().iter().zip(&shadow_sets).enumerate() {
+                        if let Some((_, cos)) = self.reaches(i, light, (index, point, normal), test)
+                        {
+                            diffuse = diffuse.saturating_add(fx::mul_unit(light.intensity, cos));
+                        }
+                    }
+                    to_rgb(self.lit(&object.material, diffuse, object.colour_at(point)))
+                }
+                // A plain sky's colour, which `Background::along` gives whatever the ray.
+                (None, Some(sky)) => sky,
+                (None, None) => self.background_along(camera, towards, s),
+            };
+            towards = towards.plus(step);
+            square.step();
+            offsets.step();
+        }
+    }
+
+    /// What the camera's ray along `towards`, whose squared length is `square`, sees of a
+    /// background that is not plain: out of line, since most backgrounds are.
+    #[cold]
+    #[inline(never)]
+    fn background_along(&self, camera: &Camera, towards: Vec3, square: u64) -> Rgb {
+        let ray = camera.ray_along(towards, square);
+        rgb_of(self.background().along(ray.dir))
+    }
+}
+
+/// `s·w` along a row, `w` stepping by `r`: `plane::offset(scale, w)` for each column, carried
+/// as the exact products `w·m` (below 2⁶¹: `w` within the ray budget, `m` below 2³¹), to
+/// which each column adds `r·m`, and rounded as `offset` rounds. A component along which the
+/// row does not move (`r`'s is 0: two of three for a camera looking along an axis) keeps its
+/// rounded value.
+struct Offsets {
+    products: [i64; 3],
+    steps: [i64; 3],
+    offset: [i32; 3],
+    shift: u32,
+}
+
+impl Offsets {
+    fn new(scale: Scale, start: Vec3, step: Vec3) -> Self {
+        let m = scale.m as i64;
+        // Past 63 every offset rounds to 0, and stays there (`offset` says why).
+        let (m, shift) = match scale.shift {
+            shift @ 1..64 => (m, shift as u32),
+            _ => (0, 1),
+        };
+        let p = |c: Fx| c.to_bits() as i64 * m;
+        let products = [p(start.x), p(start.y), p(start.z)];
+        Offsets {
+            products,
+            steps: [p(step.x), p(step.y), p(step.z)],
+            offset: products.map(|p| round(p, shift)),
+            shift,
+        }
+    }
+
+    /// `offset(scale, w)` for the current `w`.
+    #[inline]
+    fn now(&self) -> Vec3 {
+        let [x, y, z] = self.offset.map(Fx::from_bits);
+        Vec3::new(x, y, z)
+    }
+
+    #[inline]
+    fn step(&mut self) {
+        let shift = self.shift;
+        let step = |product: &mut i64, step: i64, offset: &mut i32| {
+            if step != 0 {
+                *product = product.wrapping_add(step);
+                *offset = round(*product, shift);
+            }
+        };
+        let [px, py, pz] = &mut self.products;
+        let [sx, sy, sz] = self.steps;
+        let [ox, oy, oz] = &mut self.offset;
+        step(px, sx, ox);
+        step(py, sy, oy);
+        step(pz, sz, oz);
+    }
+}
+
+/// `⌊(product + 2^(shift−1)) / 2^shift⌋`, `shift` in 1..64: [`Offsets`]' rounding, what
+/// `fx::mul_shift_round` gives for the product `w·m`.
+#[inline(always)]
+fn round(product: i64, shift: u32) -> i32 {
+    ((product + (1 << (shift - 1))) >> shift) as i32
+}
