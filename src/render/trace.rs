@@ -322,6 +322,11 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         let material = &object.material;
         let on_plane = matches!(object.shape, Shape::Plane(_));
         let (mut diffuse, mut specular) = (Fx::ZERO, Fx::ZERO);
+        let at = Surface {
+            index,
+            point,
+            normal,
+        };
         let mut light_up = |light_index: usize, light: &Light| {
             let among = self
                 .shadows()
@@ -329,8 +334,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
                     Some(&set) if on_plane => set,
                     _ => !0,
                 });
-            let Some((l, cos)) = self.reaches(light_index, light, (index, point, normal), among)
-            else {
+            let Some((l, cos)) = self.reaches(light_index, light, &at, among) else {
                 return;
             };
             diffuse = diffuse.saturating_add(fx::mul_unit(light.intensity, cos));
@@ -374,19 +378,24 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         [lit(colour.r), lit(colour.g), lit(colour.b)]
     }
 
-    /// Whether light `light_index` (`light`) reaches the surface of object `index` at
-    /// `point`, whose unit normal there is `normal`: the unit direction `l` towards it and the
-    /// cosine `n·l`, or `None` where it is at the point, does not face the surface, or — with
-    /// a shadow set `among` (see [`Scene::occluded`]), where shadows are on — is blocked.
+    /// Whether light `light_index` (`light`) reaches the surface `at`: the unit direction `l`
+    /// towards it and the cosine `n·l`, or `None` where it is at the point, does not face the
+    /// surface, or — with a shadow set `among` (see [`Scene::occluded`]), where shadows are
+    /// on — is blocked.
     // Out of line: every lit pixel's light, for the plain path and the matte runs alike.
     #[inline(never)]
     pub(crate) fn reaches(
         &self,
         light_index: usize,
         light: &Light,
-        (index, point, normal): (usize, Vec3, Vec3),
+        at: &Surface,
         among: Option<u32>,
     ) -> Option<(Vec3, Fx)> {
+        let Surface {
+            index,
+            point,
+            normal,
+        } = *at;
         let to_light = light.position.minus(point);
         let distance_squared = to_light.length_squared_wide();
         let l = to_light.normalize_with_square(distance_squared)?;
@@ -464,6 +473,15 @@ impl<const N: usize, const L: usize> Scene<N, L> {
 /// The farthest a hit point lies from the origin along any axis, in raw units: `LIMIT + FAR`
 /// (the overflow budget of the crate's docs).
 const HIT_REACH: i32 = crate::numbers::fx::LIMIT.to_bits() + crate::FAR.to_bits();
+
+/// A point on the surface of object `index`, whose unit normal there is `normal` (facing the
+/// side that is lit and seen).
+#[derive(Clone, Copy)]
+pub(crate) struct Surface {
+    pub(crate) index: usize,
+    pub(crate) point: Vec3,
+    pub(crate) normal: Vec3,
+}
 
 /// Where a secondary ray starts, which decides how it meets the surface it leaves.
 #[derive(Clone, Copy)]

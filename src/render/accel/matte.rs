@@ -19,6 +19,7 @@ use crate::numbers::reciprocal::Scale;
 use crate::numbers::vec3::Vec3;
 use crate::render::accel::row_rays::RowSquares;
 use crate::render::camera::Camera;
+use crate::render::trace::Surface;
 use crate::scene::Scene;
 use crate::scene::colour::Rgb;
 use crate::scene::linear::{rgb_of, to_rgb};
@@ -67,6 +68,11 @@ impl<const N: usize, const L: usize> Scene<N, L> {
             }
         }
         let sky = self.background().plain_colour();
+        let mut at = Surface {
+            index,
+            point: Vec3::ZERO,
+            normal,
+        };
         let mut towards = run.towards;
         let mut square = RowSquares::new(towards, step);
         // Where the plane is not ahead of the row, nothing is within reach.
@@ -82,10 +88,10 @@ impl<const N: usize, const L: usize> Scene<N, L> {
             };
             *pixel = match (hit, sky) {
                 (Some(point), _) => {
+                    at.point = point;
                     let mut diffuse = Fx::ZERO;
                     for (i, (light, &test)) in self.lights().iter().zip(&shadow_sets).enumerate() {
-                        if let Some((_, cos)) = self.reaches(i, light, (index, point, normal), test)
-                        {
+                        if let Some((_, cos)) = self.reaches(i, light, &at, test) {
                             diffuse = diffuse.saturating_add(fx::mul_unit(light.intensity, cos));
                         }
                     }
