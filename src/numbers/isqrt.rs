@@ -41,6 +41,13 @@ pub const fn isqrt(x: u64) -> u64 {
     r
 }
 
+/// [`isqrt`], out of line: for the set-up work of a frame or a row (lengths, the balls that
+/// bound what a row can meet), which shares one copy, while each sphere test keeps its own.
+#[inline(never)]
+pub(crate) const fn isqrt_once(x: u64) -> u64 {
+    isqrt(x)
+}
+
 /// Whether `r² ≤ x`: `r²` by a 32 × 32 product, and from `r = 2³²` up it exceeds every `u64`.
 #[inline]
 const fn square_at_most(r: u64, x: u64) -> bool {

@@ -3,7 +3,7 @@
 use core::ops::{Add, Neg, Sub};
 
 use crate::numbers::fx::{self, Fx};
-use crate::numbers::isqrt::isqrt;
+use crate::numbers::isqrt::isqrt_once;
 use crate::numbers::reciprocal::rsqrt;
 
 /// A point or a direction with three Q16.16 components.
@@ -261,7 +261,7 @@ impl Vec3 {
     #[inline(never)]
     #[must_use]
     pub const fn length(self) -> Fx {
-        let root = isqrt(self.length_squared_wide());
+        let root = isqrt_once(self.length_squared_wide());
         // The root is below √3 · 2³¹; above i32::MAX it saturates.
         if root > i32::MAX as u64 {
             Fx::MAX

@@ -7,6 +7,7 @@ use crate::geometry::ray::Ray;
 use crate::geometry::shape::Shape;
 use crate::geometry::sphere::Sphere;
 use crate::numbers::fx::Fx;
+use crate::numbers::isqrt::isqrt_once;
 use crate::numbers::vec3::Vec3;
 use crate::scene::hit::SceneHit;
 use crate::scene::{Object, Scene};
@@ -171,4 +172,122 @@ pub(crate) fn near_row_plane(sphere: &Sphere, eye: Vec3, normal: Vec3) -> bool {
     let reach = to_centre.x.abs() + to_centre.y.abs() + to_centre.z.abs();
     let margin = (reach >> 11) + Fx::from_bits(1 << 8);
     normal.dot(to_centre).abs() <= sphere.radius() + margin
+}
+
+/// A ball that holds every point of `sphere` which a ray of the row whose plane through `eye`
+/// has the unit normal `normal` can meet, as `(centre, radius)`: smaller than the sphere on
+/// every row but those through its middle, so its columns (`Camera::column_span`) are fewer.
+///
+/// The row's rays stray from their plane by less than `margin` at the sphere (as
+/// [`near_row_plane`] bounds it, here out to the sphere's far side). The points of the sphere
+/// that close to the plane lie in a ball about the centre `C'` of the circle the plane cuts
+/// from it: a point `P = C + q + h·n` (`q` across `n`, `|q|² + h² ≤ r²`) at `|d + h| ≤ margin`
+/// from the plane, `d = n·(C − eye)`, lies `|q|² + (d + h)² ≤ r² − (|d| − margin)² + margin²`
+/// from `C' = C − d·n` squared. Its radius is rounded up, and widened by `r·2⁻¹⁰` for the
+/// rounding of `n` and of `C'`, far more than either; where that is not smaller than `r`, the
+/// sphere itself is the ball.
+// In raw integers: once a row for each sphere near it, and short.
+#[inline(never)]
+pub(crate) fn row_ball(sphere: &Sphere, eye: Vec3, normal: Vec3) -> (Vec3, Fx) {
+    let (centre, r) = (sphere.centre(), sphere.radius());
+    let to_centre = centre.minus(eye);
+    // Raw units (2⁻¹⁶): centres, eyes and radii lie within ±1024, so every square below is
+    // under 2⁵⁵ and every sum fits.
+    let radius = r.to_bits() as i64;
+    let margin = ((to_centre.l1_raw() + radius) >> 11) + (1 << 8);
+    // n·(C − eye), rounded down: a unit off at most, which the margin covers.
+    let d = normal.dot_wide_exact(to_centre) >> 16;
+    let off = (d.abs() - margin).max(0);
+    let squared = (radius * radius - off * off).max(0) + margin * margin;
+    let widened = isqrt_once(squared as u64) as i64 + 1 + (radius >> 10) + (1 << 6);
+    if widened >= radius {
+        return (centre, r);
+    }
+    // C' = C − d·n, each component rounded down.
+    let across = |c: Fx, n: Fx| {
+        Fx::from_bits((c.to_bits() as i64 - ((n.to_bits() as i64 * d) >> 16)) as i32)
+    };
+    let circle = Vec3::new(
+        across(centre.x, normal.x),
+        across(centre.y, normal.y),
+        across(centre.z, normal.z),
+    );
+    (circle, Fx::from_bits(widened as i32))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::Camera;
+    use embedded_graphics::geometry::Size;
+
+    #[test]
+    fn a_row_meets_a_sphere_only_in_the_columns_of_its_ball() {
+        // Random spheres seen by random cameras, up vectors and fields of view: every column of
+        // every row whose ray meets a sphere lies in the span of the row's ball, and on most
+        // rows that span is narrower than the sphere's own.
+        let mut rng = crate::xorshift::XorShift(0x5eed_0fba_1150_a11e);
+        let mut next = |range: f32| {
+            let seed = rng.next();
+            ((seed >> 40) as f32 / (1u64 << 24) as f32 * 2.0 - 1.0) * range
+        };
+        let (mut rows, mut narrower, mut hits) = (0, 0, 0);
+        for case in 0..300 {
+            let eye = [next(40.0), next(40.0), next(40.0)];
+            let target = [next(40.0), next(40.0), next(40.0)];
+            let up = [next(1.0), 1.0 + next(0.5), next(1.0)];
+            let size = Size::new(
+                8 + (next(1.0).abs() * 90.0) as u32,
+                8 + (next(1.0).abs() * 70.0) as u32,
+            );
+            let Ok(camera) = Camera::look_at(eye, target)
+                .up(up)
+                .fov_degrees(20.0 + next(1.0).abs() * 120.0)
+                .size(size)
+                .build()
+            else {
+                continue;
+            };
+            let centre = [
+                target[0] + next(10.0),
+                target[1] + next(10.0),
+                target[2] + next(10.0),
+            ];
+            let Ok(sphere) = Sphere::new(centre, 0.05 + next(1.0).abs() * 12.0) else {
+                continue;
+            };
+            let whole = camera.column_span(sphere.centre(), sphere.radius());
+            for row in 0..camera.rows() {
+                let Some(normal) = camera.row_plane_normal(row) else {
+                    continue;
+                };
+                if !near_row_plane(&sphere, camera.eye(), normal) {
+                    continue;
+                }
+                let (centre, radius) = row_ball(&sphere, camera.eye(), normal);
+                let Some((first, last)) = camera.column_span(centre, radius) else {
+                    continue;
+                };
+                rows += 1;
+                if let Some((a, b)) = whole {
+                    narrower += (last - first < b - a) as u32;
+                }
+                for col in 0..camera.cols() {
+                    if sphere
+                        .hit_distance(&camera.ray(col.into(), row.into()))
+                        .is_some()
+                    {
+                        hits += 1;
+                        let col = col as i16;
+                        assert!(
+                            (first..=last).contains(&col),
+                            "case {case}, row {row}: column {col} outside {first}..={last}"
+                        );
+                    }
+                }
+            }
+        }
+        assert!(rows > 2000 && hits > 20_000, "{rows} rows, {hits} hits");
+        assert!(narrower * 2 > rows, "{narrower} of {rows} rows narrower");
+    }
 }

@@ -3,7 +3,7 @@
 
 use crate::geometry::shape::Shape;
 use crate::numbers::vec3::Vec3;
-use crate::render::accel::cull::Eye;
+use crate::render::accel::cull::{Eye, row_ball};
 use crate::render::accel::shadow_rows::row_shadowers;
 use crate::render::camera::Camera;
 use crate::scene::Scene;
@@ -61,7 +61,12 @@ impl<'a, const N: usize, const L: usize> Runs<'a, N, L> {
         for (index, object) in scene.objects().iter().enumerate().take(own_bits) {
             match object.shape {
                 Shape::Sphere(sphere) if among & (1 << index) != 0 => {
-                    if let Some(span) = camera.column_span(sphere.centre(), sphere.radius()) {
+                    // What the row's rays can meet of the sphere, and the columns that holds.
+                    let (centre, radius) = match row_normal {
+                        Some(normal) => row_ball(&sphere, camera.eye(), normal),
+                        None => (sphere.centre(), sphere.radius()),
+                    };
+                    if let Some(span) = camera.column_span(centre, radius) {
                         runs.spans[index] = span;
                         runs.bounded |= 1 << index;
                     }
