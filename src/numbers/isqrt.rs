@@ -8,8 +8,8 @@ use crate::numbers::reciprocal::rsqrt;
 /// fixray takes square roots of Q32.32 values: `isqrt(v · 2³²) = floor(sqrt(v) · 2¹⁶)`, which is
 /// the Q16.16 square root of `v`, truncated.
 ///
-/// The estimate is `x · (1/√x)` from the table-seeded reciprocal square root that also
-/// normalises vectors (good to about 2⁻²⁸), then corrected by whole steps until
+/// The estimate is `x · (1/√x)` from the table-seeded reciprocal square root that normalises
+/// vectors, with a Newton step (good to about 2⁻²⁸), then corrected by whole steps until
 /// `r² ≤ x < (r + 1)²` holds: one step or none for the values the renderer meets, at most a
 /// few dozen anywhere. Measured under QEMU in a loop on 2⁴⁰-sized arguments (the loop's own
 /// cost included), it took 208 instructions on a Cortex-M4F where core's `u64::isqrt` took

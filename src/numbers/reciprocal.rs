@@ -2,9 +2,12 @@
 //!
 //! A 64-bit division is a long library call on every chip fixray targets (the Cortex-M0 has no
 //! divide instruction at all). Both reciprocals here start from a small table built at compile
-//! time from integers, interpolated, and take one Newton step in 32 × 32 → 64-bit products:
-//! [`rsqrt`] normalises a vector with three multiplications, and [`Mantissa::over`] divides
-//! Eq. 4.2's numerator by its denominator with one more, as a [`Scale`] of 29 bits and more.
+//! time from integers. [`rsqrt_unit`] interpolates its table quadratically, to about 2⁻²⁰ in
+//! 32-bit products, which is all a unit vector needs (normalising then takes three
+//! multiplications); [`rsqrt`] adds one Newton step in 32 × 32 → 64-bit products, to 2⁻²⁹,
+//! for the integer square root. [`Mantissa::over`] divides Eq. 4.2's numerator by its
+//! denominator with a linearly interpolated seed and one Newton step, as a [`Scale`] of 29
+//! bits and more.
 
 use crate::numbers::fx::{bit_length, top_word, wide_mul_u32};
 
@@ -31,15 +34,15 @@ const fn between_knots(knots: &[u32], first: u32, x: u32) -> u32 {
 }
 
 // The reciprocal square root.
-/// `1/√μ` at the knots `μ = (64 + j)/256`, `j` in 0..=192, in Q2.30 (the first, 2, held one
-/// unit below 2³¹ so that a seed always lies below it): the seed of the Newton step,
-/// interpolated between knots.
+/// `1/√μ` at the knots `μ = (64 + j)/256`, `j` in 0..=193 (the last past 1, for the
+/// quadratic through the last interval's three knots), in Q2.30 (the first, 2, held one unit
+/// below 2³¹ so that a seed always lies below it), interpolated by [`rsqrt_unit`].
 ///
 /// Built at compile time from an integer square root, so there is no float anywhere.
-const RSQRT_KNOTS: [u32; 193] = {
-    let mut knots = [0u32; 193];
+const RSQRT_KNOTS: [u32; 194] = {
+    let mut knots = [0u32; 194];
     let mut j = 0;
-    while j < 193 {
+    while j < 194 {
         // 1/√((64 + j)/256) in Q2.30: 2³⁴/√(64 + j) = √(2⁶⁸ / (64 + j)).
         knots[j] = knot(((1u128 << 68) / (64 + j as u128)).isqrt());
         j += 1;
@@ -47,21 +50,51 @@ const RSQRT_KNOTS: [u32; 193] = {
     knots
 };
 
-/// `1/√s` for `s ≥ 1`, as `(y, shift)` with `1/√s ≈ y · 2^−(30 + shift)`.
+/// `1/√s` for `s ≥ 1`, as `(y, shift)` with `1/√s ≈ y · 2^−(30 + shift)`, to about 2⁻²⁰:
+/// what a unit vector needs (`Vec3::normalize_with_square`), whose components it leaves
+/// within a tenth of a unit of 2⁻¹⁶ of the exact quotient before rounding.
 ///
-/// `s` is scaled by an even power of two into `μ ∈ [¼, 1)` in Q0.32; linear interpolation
-/// between the 193 knots of a table gives `1/√μ` to about 2⁻¹⁵ relative, in 32-bit
-/// arithmetic, and one Newton step `y ← y·(3 − μ·y²)/2` brings it to about 2⁻²⁹. `y` lies
-/// in `(2³⁰, 2³¹)`. The Newton step's three products are 32 × 32 → 64 bits.
+/// `s` is scaled by an even power of two into `μ ∈ [¼, 1)`, a 32-bit mantissa `m` in Q0.32,
+/// and `1/√μ` is interpolated quadratically between three knots of a table of 194, in 32-bit
+/// products: no Newton step. `y` lies in `(2³⁰, 2³¹)`.
+// In line on the Armv7-M cores, where the bit length is one instruction and the whole is
+// short; out of line on ARMv6-M and RV32, where it is not, and one copy serves every ray and
+// light direction within the flash the firmware is held to.
+#[cfg_attr(
+    not(any(target_arch = "riscv32", not(target_has_atomic = "32"))),
+    inline
+)]
+#[cfg_attr(
+    any(target_arch = "riscv32", not(target_has_atomic = "32")),
+    inline(never)
+)]
 #[must_use]
-pub(crate) const fn rsqrt(s: u64) -> (u32, u32) {
+pub(crate) const fn rsqrt_unit(s: u64) -> (u32, u32) {
     // 0 has no reciprocal root, and no bit for the table to be indexed by.
     debug_assert!(s >= 1, "rsqrt: zero argument");
     // s < 2^p with p even, and s ≥ 2^(p−2).
     let bits = bit_length(s);
     let p = (bits + 1) & !1;
     let m = top_word(s, p);
-    let mut y = between_knots(&RSQRT_KNOTS, 64, m); // Q2.30
+    // Knot j below μ, and t, the next 16 bits, the way to knot j + 1 in units of 2⁻¹⁶.
+    let j = ((m >> 24) - 64) as usize;
+    let t = (m >> 8) & 0xffff;
+    let (k0, k1, k2) = (RSQRT_KNOTS[j], RSQRT_KNOTS[j + 1], RSQRT_KNOTS[j + 2]);
+    let linear = k0 - ((((k0 - k1) >> 8) * t) >> 8);
+    // The second difference, below 2¹⁹ (1/√μ is convex), times t(1 − t)/2, below 2¹³: the
+    // product fits 32 bits. The sums may wrap on the way, and come back exactly.
+    let bend = k0.wrapping_add(k2).wrapping_sub(k1.wrapping_mul(2));
+    let y = linear.wrapping_sub((((t * (65536 - t)) >> 17) * bend) >> 16);
+    (y, p / 2)
+}
+
+/// `1/√s` for `s ≥ 1`, as [`rsqrt_unit`], to about 2⁻²⁹: its seed and one Newton step
+/// `y ← y·(3 − μ·y²)/2`, whose three products are 32 × 32 → 64 bits. For the integer square
+/// root, whose estimate it corrects by whole steps.
+#[must_use]
+pub(crate) const fn rsqrt(s: u64) -> (u32, u32) {
+    let (mut y, half) = rsqrt_unit(s);
+    let m = top_word(s, 2 * half); // μ in Q0.32, as the seed had it
     let y2 = (wide_mul_u32(y, y) >> 30) as u32; // Q2.30, below 4 · 2³⁰
     let my2 = (wide_mul_u32(m, y2) >> 32) as u32; // μ·y², near 1 in Q2.30
     let factor = (3u32 << 30).wrapping_sub(my2); // 3 − μ·y², near 2, in Q2.30
@@ -72,7 +105,7 @@ pub(crate) const fn rsqrt(s: u64) -> (u32, u32) {
         } else {
             y
         },
-        p / 2,
+        half,
     )
 }
 
@@ -202,6 +235,35 @@ mod tests {
             worst = worst.max(relative_error(x));
         }
         assert!(worst < 2f64.powi(-29), "worst relative error {worst:e}");
+    }
+
+    #[test]
+    fn the_seed_alone_is_accurate_to_two_to_the_minus_20() {
+        // Every knot's interval on a fine grid, each mantissa at several scales (the even
+        // powers of two it is scaled by), and random arguments across the whole range.
+        let error = |s: u64| {
+            let (y, shift) = rsqrt_unit(s);
+            let got = y as f64 / 2f64.powi(30 + shift as i32);
+            (got * (s as f64).sqrt() - 1.0).abs()
+        };
+        let mut worst: f64 = 0.0;
+        for m in ((1u64 << 30)..(1 << 32)).step_by(4099) {
+            for scale in [0, 2, 30, 62] {
+                let s = m << scale >> 30;
+                if s > 0 {
+                    worst = worst.max(error(s));
+                }
+            }
+            worst = worst.max(error(m));
+        }
+        let mut rng = crate::xorshift::XorShift(0x2bad_5eed_0f1e_e7ed);
+        for _ in 0..200_000 {
+            let s = rng.next() >> (rng.next() % 64);
+            worst = worst.max(error(s.max(1)));
+        }
+        assert!(worst < 2f64.powi(-20), "worst relative error {worst:e}");
+        // The seed's error is the whole of it: a step of Newton's brings it below 2⁻²⁹.
+        assert!(worst > 2f64.powi(-22), "worst relative error {worst:e}");
     }
 
     #[test]

@@ -4,7 +4,7 @@ use core::ops::{Add, Neg, Sub};
 
 use crate::numbers::fx::{self, Fx};
 use crate::numbers::isqrt::isqrt_once;
-use crate::numbers::reciprocal::rsqrt;
+use crate::numbers::reciprocal::rsqrt_unit;
 
 /// A point or a direction with three Q16.16 components.
 ///
@@ -272,9 +272,9 @@ impl Vec3 {
 
     /// The unit vector along `self`, or `None` for the zero vector.
     ///
-    /// The exact squared length goes through a table-seeded reciprocal square root (good to
-    /// about 2⁻²⁸ whatever the size of `self`), and each component is multiplied by it and
-    /// rounded to nearest: every component is within one unit of 2⁻¹⁶ of the exact unit
+    /// The exact squared length goes through a table-interpolated reciprocal square root (good
+    /// to about 2⁻²⁰ whatever the size of `self`), and each component is multiplied by it and
+    /// rounded to nearest: every component is within 0.55 of a unit of 2⁻¹⁶ of the exact unit
     /// vector, even for vectors a few units of 2⁻¹⁶ long, and no division is needed.
     ///
     /// ```
@@ -308,7 +308,7 @@ impl Vec3 {
             return None;
         }
         // 1/‖self‖ in units of 2⁻¹⁶ is y · 2⁻⁽³⁰⁺ˢʰⁱᶠᵗ⁾ · 2¹⁶.
-        let (y, shift) = rsqrt(square);
+        let (y, shift) = rsqrt_unit(square);
         let shift = 14 + shift;
         // |c| ≤ ‖self‖ and y·‖self‖ ≈ 2^(30 + shift − 14): each result is at most 2¹⁶ and a bit.
         const fn scale(c: Fx, y: u32, shift: u32) -> Fx {
