@@ -72,8 +72,8 @@
 //! | --- | --- |
 //! | row buffer, `[Rgb; 320]` | 960 |
 //! | the [`Viewport`] (two references and a point, 32-bit target) | 16 |
-//! | stack below [`Viewport::render`], Cortex-M0, classic scene (the deepest) | 3 296 |
-//! | **total** | **about 4.3 KB** |
+//! | stack below [`Viewport::render`], Cortex-M0, classic scene (the deepest) | 3 416 |
+//! | **total** | **about 4.4 KB** |
 //!
 //! A framebuffer for the same display would take 230 400 bytes. The scene (`Scene<8>`, about
 //! 1 KB with its shadow cones) and camera (56 bytes) are the caller's, wherever it keeps
@@ -90,10 +90,10 @@
 //!
 //! | chip | [`Viewport::render`], one-row buffer | `picture::<Rgb565, 160>()?.draw` |
 //! | --- | ---: | ---: |
-//! | Cortex-M0 (`thumbv6m-none-eabi`) | 2 560 / 3 296 | 3 056 / 3 792 |
-//! | Cortex-M3 (`thumbv7m-none-eabi`) | 2 088 / 2 832 | 2 592 / 3 336 |
-//! | Cortex-M4F (`thumbv7em-none-eabihf`) | 2 080 / 2 836 | 2 584 / 3 340 |
-//! | RV32IMC (`riscv32imc-unknown-none-elf`) | 1 912 / 2 584 | 2 408 / 3 080 |
+//! | Cortex-M0 (`thumbv6m-none-eabi`) | 2 568 / 3 416 | 3 064 / 3 912 |
+//! | Cortex-M3 (`thumbv7m-none-eabi`) | 2 056 / 2 896 | 2 560 / 3 400 |
+//! | Cortex-M4F (`thumbv7em-none-eabihf`) | 2 056 / 2 908 | 2 560 / 3 412 |
+//! | RV32IMC (`riscv32imc-unknown-none-elf`) | 1 724 / 2 764 | 2 220 / 3 260 |
 //!
 //! The classic scene, with mirrors, glass, highlights and three lights' shadows, takes the
 //! deepest path; a picture adds its row buffer (480 bytes at 160 columns) and a few words to
