@@ -8,10 +8,10 @@
 //! carried along the row by exact additions ([`Offsets`]). No ray is made for a hit: shading
 //! a matte surface needs neither its direction nor its distance. What the run's pixels share is
 //! worked out once too: the object and its facing normal, and for each light whether a shadow
-//! ray from the run can meet anything at all (on most rows of a floor nothing can, and no
-//! shadow ray is made). Each hit is then lit by the plain path's own arithmetic
-//! (`towards_light`, `Scene::occluded`, `Scene::lit`), so the pixels are bit for bit
-//! [`Scene::trace`]'s.
+//! ray from the run can meet anything at all (on a row that no shadow can cross, none is
+//! made). Each hit is then lit by the plain path's own functions (`Scene::reaches`, which
+//! takes the light's direction and casts the shadow ray, and `Scene::lit`), so the pixels are
+//! bit for bit [`Scene::trace`]'s.
 
 use crate::geometry::plane::{Numerator, Plane, far_reach};
 use crate::numbers::fx::{self, Fx};
