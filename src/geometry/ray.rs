@@ -57,7 +57,7 @@ impl Ray {
     // Not stable API: hidden from the docs.
     #[doc(hidden)]
     pub const fn from_hit_point(origin: Vec3, dir: Vec3) -> Result<Self, Error> {
-        let bound = crate::LIMIT.to_bits() + crate::FAR.to_bits();
+        let bound = crate::numbers::fx::HIT_REACH;
         if !origin.within_raw(bound) {
             return Err(Error::OutOfRange {
                 quantity: Quantity::RayOrigin,

@@ -22,6 +22,10 @@ pub const LIMIT: Fx = Fx::const_from_int(1024);
 /// stay well inside Q16.16.
 pub const FAR: Fx = Fx::const_from_int(8192);
 
+/// The farthest a hit point lies from the origin along any axis, in raw units: `LIMIT + FAR`
+/// (the overflow budget of the crate's docs), where a secondary ray may start.
+pub(crate) const HIT_REACH: i32 = LIMIT.to_bits() + FAR.to_bits();
+
 /// Number of fractional bits in [`Fx`].
 pub(crate) const FRAC: u32 = 16;
 

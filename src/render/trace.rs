@@ -162,7 +162,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
             // which they are misses, so that the next ray starts inside it too.
             let hit = self
                 .shoot_after(&ray, Some(next.start))
-                .filter(|h| h.hit.point.within_raw(HIT_REACH));
+                .filter(|h| h.hit.point.within_raw(fx::HIT_REACH));
             let Some((h, object)) = hit.and_then(|h| Some((h, self.objects().get(h.object)?)))
             else {
                 add(&mut sum, next.weight, self.background().along(next.dir));
@@ -440,11 +440,10 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         let may_block = |index: usize, object: &Object, cone: &ShadowCone| {
             cone.may_block(ray.dir, distance_squared) && index != leaving && blocks(object)
         };
-        let set = self.shadowers().get(light).and_then(|s| s.get(leaving));
-        match set {
+        match self.walked(leaving, light) {
             // Only the objects that can shadow the one the ray leaves (bit `i` for object
             // `i`), most often none or one: walked by their bits.
-            Some(&set) if objects.len() <= 32 => {
+            Some(set) => {
                 let mut rest = set & among;
                 while rest != 0 {
                     let index = rest.trailing_zeros() as usize;
@@ -468,11 +467,17 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         }
         false
     }
-}
 
-/// The farthest a hit point lies from the origin along any axis, in raw units: `LIMIT + FAR`
-/// (the overflow budget of the crate's docs).
-const HIT_REACH: i32 = crate::numbers::fx::LIMIT.to_bits() + crate::FAR.to_bits();
+    /// The objects (bit `i` for object `i`) that [`Scene::occluded`] walks for a shadow ray
+    /// from object `leaving` towards light `light`, before they are met with its `among`:
+    /// those that can shadow `leaving` from it. `None` where every object is tried: scenes
+    /// of more than 32 objects, or a light that is not the scene's.
+    #[inline(always)]
+    pub(crate) fn walked(&self, leaving: usize, light: usize) -> Option<u32> {
+        let set = self.shadowers().get(light).and_then(|s| s.get(leaving));
+        set.copied().filter(|_| self.objects().len() <= 32)
+    }
+}
 
 /// A point on the surface of object `index`, whose unit normal there is `normal` (facing the
 /// side that is lit and seen).

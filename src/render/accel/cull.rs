@@ -167,11 +167,17 @@ impl<const N: usize> Eye<N> {
 #[inline(always)]
 pub(crate) fn near_row_plane(sphere: &Sphere, eye: Vec3, normal: Vec3) -> bool {
     let to_centre = sphere.centre() - eye;
-    // Ray directions are within a few units of 2⁻¹⁶ of the row plane: over a distance D they
-    // stray by less than D · 2⁻¹², and the normal's own rounding adds as much again.
-    let reach = to_centre.x.abs() + to_centre.y.abs() + to_centre.z.abs();
-    let margin = (reach >> 11) + Fx::from_bits(1 << 8);
+    let margin = Fx::from_bits(stray(to_centre.l1_raw()) as i32);
     normal.dot(to_centre).abs() <= sphere.radius() + margin
+}
+
+/// How far, in raw units, a row's rays may lie from the row's plane at a distance of at most
+/// `reach` raw units from the eye (an `|x| + |y| + |z|`, at least the distance): ray
+/// directions are within a few units of 2⁻¹⁶ of the row plane, so over a distance D they
+/// stray by less than D · 2⁻¹², and the normal's own rounding adds as much again.
+#[inline(always)]
+const fn stray(reach: i64) -> i64 {
+    (reach >> 11) + (1 << 8)
 }
 
 /// A ball that holds every point of `sphere` which a ray of the row whose plane through `eye`
@@ -194,7 +200,7 @@ pub(crate) fn row_ball(sphere: &Sphere, eye: Vec3, normal: Vec3) -> (Vec3, Fx) {
     // Raw units (2⁻¹⁶): centres, eyes and radii lie within ±1024, so every square below is
     // under 2⁵⁵ and every sum fits.
     let radius = r.to_bits() as i64;
-    let margin = ((to_centre.l1_raw() + radius) >> 11) + (1 << 8);
+    let margin = stray(to_centre.l1_raw() + radius);
     // n·(C − eye), rounded down: a unit off at most, which the margin covers.
     let d = normal.dot_wide_exact(to_centre) >> 16;
     let off = (d.abs() - margin).max(0);

@@ -55,15 +55,15 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         let (eye, step) = (camera.eye(), camera.column_step());
         let normal = plane.facing(run.num);
         // For each light, the set a shadow ray from the run tries, or `None` where it can
-        // meet nothing: `Scene::occluded` walks only the objects that can shadow this one
-        // from that light and are in the row's set (in scenes of up to 32 objects).
-        let shadowers = self.shadowers();
+        // meet nothing: of the objects `Scene::occluded` walks (`Scene::walked`), it tries
+        // only those in the row's set.
         let mut shadow_sets = [None; L];
         if self.shadows() {
             for (light, test) in shadow_sets.iter_mut().enumerate() {
                 let among = plane_shadowers.get(light).copied().unwrap_or(!0);
-                let set = shadowers.get(light).and_then(|s| s.get(index)).copied();
-                let none = self.objects().len() <= 32 && set.is_some_and(|set| set & among == 0);
+                let none = self
+                    .walked(index, light)
+                    .is_some_and(|set| set & among == 0);
                 *test = (!none).then_some(among);
             }
         }
