@@ -5,9 +5,10 @@ Reads QEMU's `-d in_asm,exec,nochain` log of a firmware run (from a file or a FI
 how often each guest instruction ran (each translated block's executions times its
 instructions), maps the addresses to source through `addr2line -i` (inlined frames included),
 keeps what ran inside `render_row`, and prints instructions per pixel by the innermost
-function, or by a deeper chain of inlined callers with --depth.
+function, or by a deeper chain of inlined callers with --depth, or by the function the
+code was compiled into (outermost first) with --outer.
 
-Usage: profile.py LOG ELF ADDR2LINE [--depth N] [--lines] [--top N] [--pixels N]
+Usage: profile.py LOG ELF ADDR2LINE [--depth N] [--lines] [--outer [--calls]] [--top N] [--pixels N]
 Normally run by scripts/profile.sh.
 """
 import argparse
@@ -21,6 +22,10 @@ parser.add_argument("elf")
 parser.add_argument("addr2line")
 parser.add_argument("--depth", type=int, default=1, help="inlined callers to show")
 parser.add_argument("--lines", action="store_true", help="group by source line too")
+parser.add_argument("--outer", action="store_true",
+                    help="group by the function the code was compiled into, not inlined ones")
+parser.add_argument("--calls", action="store_true",
+                    help="with --outer: also how often each function was entered, a pixel")
 parser.add_argument("--top", type=int, default=40)
 parser.add_argument("--pixels", type=int, default=160 * 128)
 args = parser.parse_args()
@@ -68,6 +73,7 @@ def short(name):
 
 
 totals = collections.Counter()
+entries = {}  # with --calls: each outermost function's first address, which a call enters
 for address, count in counts.items():
     chain = chains.get(address, [])
     # fixray's code, inlined into the frame's render_row calls or called from them; the
@@ -78,12 +84,17 @@ for address, count in counts.items():
         continue
     if "firmware" in names[0] or any("FrameHash" in n for n in names):
         continue
+    frames = chain[::-1][: args.depth] if args.outer else chain[: args.depth]
     parts = [short(name) + (":" + place.split(":")[-1] if args.lines else "")
-             for name, place in chain[: args.depth]]
-    totals[" < ".join(parts)] += count
+             for name, place in frames]
+    key = " < ".join(parts)
+    totals[key] += count
+    if args.calls and (key not in entries or address < entries[key]):
+        entries[key] = address
 
 total = sum(totals.values())
 print("%.1f instructions a pixel in fixray's code (%d pixels)" % (total / args.pixels,
                                                                   args.pixels))
 for key, count in totals.most_common(args.top):
-    print("%8.1f  %5.1f %%  %s" % (count / args.pixels, 100 * count / total, key))
+    calls = ("  %6.2f calls" % (counts[entries[key]] / args.pixels)) if key in entries else ""
+    print("%8.1f  %5.1f %%%s  %s" % (count / args.pixels, 100 * count / total, calls, key))

@@ -188,3 +188,55 @@ fn matte_floors_and_ceilings_equal_their_pixels_traced_one_by_one() {
         }
     }
 }
+
+/// Spheres sunk into a floor, resting on it, and lifted off it by less than, about and more
+/// than the margin `render_row` keeps before trying a sphere's hit ahead of the floor's, and
+/// one through a wall, seen from eyes above the floor, just over it and below it: the planes
+/// may go untried only where no hit of theirs could be nearer, and every pixel must be the one
+/// traced.
+#[test]
+fn spheres_on_and_through_planes_equal_their_pixels_traced_one_by_one() {
+    use fixray::{Background, Camera, Light, Plane, Scene, Sphere};
+    let mut scene: Scene<10, 2> = Scene::new(
+        Light::new([-8.0, 12.0, 6.0], 0.8).unwrap(),
+        0.2,
+        Background::plain(Rgb::new(40, 60, 90)),
+    )
+    .unwrap();
+    scene
+        .add_light(Light::new([6.0, 3.0, -2.0], 0.4).unwrap())
+        .unwrap();
+    let floor = Plane::new([0.0, 0.0, 0.0], [0.0, 1.0, 0.0]).unwrap();
+    let wall = Plane::new([0.0, 0.0, -14.0], [0.2, 0.0, 1.0]).unwrap();
+    scene.add_plane(floor, Rgb::new(120, 150, 90)).unwrap();
+    scene.add_plane(wall, Rgb::new(150, 140, 170)).unwrap();
+    // Centre heights over the floor for radius 1: sunk, resting, lifted by 2⁻⁹ (inside the
+    // margin), by 0.02 (about it), by 0.2, and one through the wall.
+    for (x, y, z) in [
+        (-5.0, 0.4, -8.0),
+        (-2.5, 1.0, -8.0),
+        (0.0, 1.0 + 1.0 / 512.0, -8.0),
+        (2.5, 1.02, -8.0),
+        (5.0, 1.2, -8.0),
+        (1.0, 2.5, -13.6),
+    ] {
+        let ball = Sphere::new([x, y, z], 1.0).unwrap();
+        scene.add_sphere(ball, Rgb::new(200, 80, 60)).unwrap();
+    }
+    for (eye, target) in [
+        ([0.0, 4.0, 4.0], [0.0, 0.5, -8.0]),
+        ([1.0, 0.05, 2.0], [0.0, 0.6, -8.0]),
+        ([-1.0, 1.0, -4.0], [3.0, 1.0, -8.0]),
+        ([0.0, -3.0, 3.0], [0.0, 0.0, -8.0]),
+    ] {
+        let camera = Camera::look_at(eye, target)
+            .fov_degrees(70.0)
+            .size(Size::new(96, 64))
+            .build()
+            .unwrap();
+        for shadows in [true, false] {
+            scene.set_shadows(shadows);
+            rows_match_tracing_each_pixel(&scene, &camera);
+        }
+    }
+}

@@ -94,7 +94,7 @@ fn far_from_row<const N: usize, const L: usize>(
     // products', is below `error`.
     let to_light = light - eye;
     let across = row_normal.dot(to_light);
-    let pi = row_normal.scale(height) - normal.scale(across);
+    let pi = scaled(row_normal, height) - scaled(normal, across);
     let error =
         Fx::from_bits(((height.abs().to_bits() as i64 + to_light.l1_raw()) >> 14) as i32 + 12);
     let size = pi.length();
@@ -140,8 +140,15 @@ fn far_from_row<const N: usize, const L: usize>(
     Some(ruled_out)
 }
 
+/// `v.scale(s)`, out of line: once a row and light, twice.
+#[inline(never)]
+fn scaled(v: Vec3, s: Fx) -> Vec3 {
+    v.scale(s)
+}
+
 /// `num / den` for positive `den`, rounded up, or `None` from 1 up: an angle that wide rules
 /// nothing out. Once a row and light: a plain division.
+#[inline(never)]
 fn quotient(num: Fx, den: Fx) -> Option<Fx> {
     let (num, den) = (num.to_bits(), den.to_bits());
     if num < 0 || den <= 0 || num >= den {
