@@ -370,9 +370,14 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     pub(crate) fn lit(&self, material: &Material, diffuse: Fx, colour: Rgb) -> Linear {
         // Several lights and a specular weight up to 16 can exceed Q16.16's range: the sums
         // saturate rather than wrap.
-        let k = self
-            .ambient()
-            .saturating_add(fx::mul(material.diffuse, diffuse));
+        // A weight of 1, every matte material's, leaves the sum as it is (the product rounds
+        // to it exactly): no 64-bit product for it where that is a long sequence.
+        let weighted = if material.diffuse == Fx::ONE {
+            diffuse
+        } else {
+            fx::mul(material.diffuse, diffuse)
+        };
+        let k = self.ambient().saturating_add(weighted);
         // A channel is at most 1: its product with k needs no saturation.
         let lit = |c: u8| fx::mul_fits(k, channel_to_linear(c));
         [lit(colour.r), lit(colour.g), lit(colour.b)]
