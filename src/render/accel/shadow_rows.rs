@@ -82,7 +82,7 @@ fn far_from_row<const N: usize, const L: usize>(
     let normal = plane.normal();
     // The light's height above the plane: shadow rays from it are at least `reach` long.
     // Lights, eyes and planes' points lie within ±LIMIT: no difference here saturates.
-    let height = normal.dot(light - plane.point());
+    let height = dotted(normal, light - plane.point());
     let reach = height.abs() - OFF_PLANE;
     // The sine of the angle between the plane and the row's plane, less its rounding.
     let sin_row = row_normal.cross(normal).length() - Fx::from_bits(1 << 3);
@@ -93,7 +93,7 @@ fn far_from_row<const N: usize, const L: usize>(
     // light, `height · m − (m·(light − eye)) · n`. Its rounding, from `m`'s 2⁻¹⁴ and the
     // products', is below `error`.
     let to_light = light - eye;
-    let across = row_normal.dot(to_light);
+    let across = dotted(row_normal, to_light);
     let pi = scaled(row_normal, height) - scaled(normal, across);
     let error =
         Fx::from_bits(((height.abs().to_bits() as i64 + to_light.l1_raw()) >> 14) as i32 + 12);
@@ -107,7 +107,7 @@ fn far_from_row<const N: usize, const L: usize>(
     let from_eye = to_light.length();
     let off = quotient(
         OFF_PLANE + ((reach + from_eye) >> OFF_ROW_SHIFT),
-        reach.saturating_mul(sin_row),
+        product(reach, sin_row),
     )?;
     let tilt = quotient(error * 2, size)? + ROUNDED_DIRECTION;
     let angle = off.saturating_add(tilt);
@@ -131,9 +131,9 @@ fn far_from_row<const N: usize, const L: usize>(
         // The shadow ray passes within `wide` of the centre at a point at most
         // `distance + wide` from the light, which is within `(distance + wide) · angle` of Π.
         let limit = wide
-            .saturating_add((distance + wide).saturating_mul(angle))
+            .saturating_add(product(distance + wide, angle))
             .saturating_add(Fx::from_bits(1 << 8));
-        if pi.dot(to_centre).abs() > limit {
+        if dotted(pi, to_centre).abs() > limit {
             ruled_out |= 1 << index;
         }
     }
@@ -144,6 +144,18 @@ fn far_from_row<const N: usize, const L: usize>(
 #[inline(never)]
 fn scaled(v: Vec3, s: Fx) -> Vec3 {
     v.scale(s)
+}
+
+/// `a.saturating_mul(b)`, out of line: twice a row and light.
+#[inline(never)]
+fn product(a: Fx, b: Fx) -> Fx {
+    a.saturating_mul(b)
+}
+
+/// `u.dot(v)`, out of line: a few times a row and light.
+#[inline(never)]
+fn dotted(u: Vec3, v: Vec3) -> Fx {
+    u.dot(v)
 }
 
 /// `num / den` for positive `den`, rounded up, or `None` from 1 up: an angle that wide rules
