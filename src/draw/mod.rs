@@ -90,9 +90,9 @@
 //!
 //! | chip | [`Viewport::render`], one-row buffer | `picture::<Rgb565, 160>()?.draw` |
 //! | --- | ---: | ---: |
-//! | Cortex-M0 (`thumbv6m-none-eabi`) | 2 568 / 3 416 | 3 064 / 3 912 |
-//! | Cortex-M3 (`thumbv7m-none-eabi`) | 2 056 / 2 896 | 2 560 / 3 400 |
-//! | Cortex-M4F (`thumbv7em-none-eabihf`) | 2 056 / 2 908 | 2 560 / 3 412 |
+//! | Cortex-M0 (`thumbv6m-none-eabi`) | 2 592 / 3 440 | 3 088 / 3 936 |
+//! | Cortex-M3 (`thumbv7m-none-eabi`) | 2 176 / 3 016 | 2 680 / 3 520 |
+//! | Cortex-M4F (`thumbv7em-none-eabihf`) | 2 176 / 3 028 | 2 680 / 3 532 |
 //! | RV32IMC (`riscv32imc-unknown-none-elf`) | 1 724 / 2 764 | 2 220 / 3 260 |
 //!
 //! The classic scene, with mirrors, glass, highlights and three lights' shadows, takes the

@@ -223,6 +223,19 @@ impl Vec3 {
         }
     }
 
+    /// [`Vec3::dot`], out of line: for the work of a frame or a row (set-up, culling, shadow
+    /// sets), which shares one copy.
+    #[inline(never)]
+    pub(crate) const fn dot_once(self, o: Vec3) -> Fx {
+        self.dot(o)
+    }
+
+    /// [`Vec3::cross`], out of line: for the work of a frame or a row, as [`Vec3::dot_once`].
+    #[inline(never)]
+    pub(crate) const fn cross_once(self, o: Vec3) -> Vec3 {
+        self.cross(o)
+    }
+
     /// The cross product, each component formed at 64 bits and rounded once.
     #[inline]
     #[must_use]

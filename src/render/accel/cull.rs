@@ -193,15 +193,17 @@ pub(crate) struct Eye<const N: usize> {
     numerators: [Numerator; N],
     /// The planes among the first 64 objects (bit `i` for object `i`).
     planes: u64,
-    /// The spheres every hit of which, as a ray from the eye finds it, is nearer than any
-    /// plane's hit on that ray (bit `i` for object `i`; none in scenes of more than 64
-    /// objects): those that lie wholly on the eye's side of every plane ([`before_plane`]).
+    /// Of the spheres the rays will try, those every hit of which, as a ray from the eye
+    /// finds it, is nearer than any plane's hit on that ray (bit `i` for object `i`; none in
+    /// scenes of more than 64 objects): they lie wholly on the eye's side of every plane
+    /// ([`before_plane`]).
     before_planes: u64,
 }
 
 impl<const N: usize> Eye<N> {
-    /// The shared terms of rays from `origin` into `scene`.
-    pub(crate) fn new<const L: usize>(scene: &Scene<N, L>, origin: Vec3) -> Self {
+    /// The shared terms of rays from `origin` into `scene` that try the objects of `among`
+    /// (bit `i` for object `i`).
+    pub(crate) fn new<const L: usize>(scene: &Scene<N, L>, origin: Vec3, among: u64) -> Self {
         let mut numerators = [Numerator::NONE; N];
         let mut planes = 0;
         for (index, (num, object)) in numerators.iter_mut().zip(scene.objects()).enumerate() {
@@ -213,8 +215,8 @@ impl<const N: usize> Eye<N> {
         Eye {
             numerators,
             planes,
-            before_planes: if planes != 0 {
-                spheres_before_planes(scene, planes, &numerators, origin)
+            before_planes: if planes != 0 && among & !planes != 0 {
+                spheres_before_planes(scene, planes, among & !planes, &numerators, origin)
             } else {
                 0
             },
@@ -227,13 +229,14 @@ impl<const N: usize> Eye<N> {
     }
 }
 
-/// The spheres of `scene` that lie wholly before each of its planes `planes` (bit `i` for
-/// object `i`), seen from `eye` ([`before_plane`]); none in scenes of more than 64 objects.
-/// Once a row, and out of line.
+/// The spheres among the objects `others` of `scene` that lie wholly before each of its
+/// planes `planes` (bit `i` for object `i`), seen from `eye` ([`before_plane`]); none in
+/// scenes of more than 64 objects. Once a row, and out of line.
 #[inline(never)]
 fn spheres_before_planes<const N: usize, const L: usize>(
     scene: &Scene<N, L>,
     planes: u64,
+    others: u64,
     numerators: &[Numerator; N],
     eye: Vec3,
 ) -> u64 {
@@ -241,9 +244,11 @@ fn spheres_before_planes<const N: usize, const L: usize>(
     if objects.len() > 64 {
         return 0;
     }
-    let mut before_planes = 0;
-    for (index, object) in objects.iter().enumerate() {
-        let Shape::Sphere(sphere) = &object.shape else {
+    let (mut before_planes, mut spheres) = (0, others);
+    while spheres != 0 {
+        let index = spheres.trailing_zeros() as usize;
+        spheres &= spheres - 1;
+        let Some(Shape::Sphere(sphere)) = objects.get(index).map(|o| &o.shape) else {
             continue;
         };
         let (mut rest, mut before) = (planes, true);
@@ -299,7 +304,7 @@ fn before_plane(sphere: &Sphere, plane: &Plane, from_eye: &Numerator, eye: Vec3)
 pub(crate) fn near_row_plane(sphere: &Sphere, eye: Vec3, normal: Vec3) -> bool {
     let to_centre = sphere.centre() - eye;
     let margin = Fx::from_bits(stray(to_centre.l1_raw()) as i32);
-    normal.dot(to_centre).abs() <= sphere.radius() + margin
+    normal.dot_once(to_centre).abs() <= sphere.radius() + margin
 }
 
 /// How far, in raw units, a row's rays may lie from the row's plane at a distance of at most
@@ -362,7 +367,7 @@ mod tests {
     fn the_demo_balls_lie_before_its_ground_seen_from_above_it_only() {
         let mut scene = crate::demo::scene();
         let camera = crate::demo::camera(160, 128).unwrap();
-        let eye = Eye::new(&scene, camera.eye());
+        let eye = Eye::new(&scene, camera.eye(), !0);
         assert_eq!((eye.planes, eye.before_planes), (0b1, 0b11110));
         // A ball through the ground (y = −4) is not; nor is one lifted off it by 2⁻⁹ only,
         // within the margin. From below the ground, none is.
@@ -372,9 +377,9 @@ mod tests {
                 .add_sphere(Sphere::new([0.0, y, -10.0], 1.0).unwrap(), rgb)
                 .unwrap();
         }
-        let eye = Eye::new(&scene, camera.eye());
+        let eye = Eye::new(&scene, camera.eye(), !0);
         assert_eq!(eye.before_planes, 0b11110);
-        let below = Eye::new(&scene, Vec3::from_ints(0, -6, 0));
+        let below = Eye::new(&scene, Vec3::from_ints(0, -6, 0), !0);
         assert_eq!(below.before_planes, 0);
     }
 

@@ -52,7 +52,7 @@ impl<'a, const N: usize, const L: usize> Runs<'a, N, L> {
             spans: [(0, 0); 64],
             planes: 0,
             shadowers: [!0; L],
-            eye: Eye::new(scene, camera.eye()),
+            eye: Eye::new(scene, camera.eye(), among),
             start: camera.row_start(row),
             step: camera.column_step(),
             col: 0,

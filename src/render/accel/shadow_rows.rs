@@ -82,10 +82,10 @@ fn far_from_row<const N: usize, const L: usize>(
     let normal = plane.normal();
     // The light's height above the plane: shadow rays from it are at least `reach` long.
     // Lights, eyes and planes' points lie within ±LIMIT: no difference here saturates.
-    let height = dotted(normal, light - plane.point());
+    let height = normal.dot_once(light - plane.point());
     let reach = height.abs() - OFF_PLANE;
     // The sine of the angle between the plane and the row's plane, less its rounding.
-    let sin_row = row_normal.cross(normal).length() - Fx::from_bits(1 << 3);
+    let sin_row = row_normal.cross_once(normal).length() - Fx::from_bits(1 << 3);
     if reach < Fx::from_bits(1 << 14) || sin_row < Fx::from_bits(1 << 10) {
         return None; // a light within ¼ of the plane, or a row's plane within 1/64 of it
     }
@@ -93,7 +93,7 @@ fn far_from_row<const N: usize, const L: usize>(
     // light, `height · m − (m·(light − eye)) · n`. Its rounding, from `m`'s 2⁻¹⁴ and the
     // products', is below `error`.
     let to_light = light - eye;
-    let across = dotted(row_normal, to_light);
+    let across = row_normal.dot_once(to_light);
     let pi = scaled(row_normal, height) - scaled(normal, across);
     let error =
         Fx::from_bits(((height.abs().to_bits() as i64 + to_light.l1_raw()) >> 14) as i32 + 12);
@@ -133,7 +133,7 @@ fn far_from_row<const N: usize, const L: usize>(
         let limit = wide
             .saturating_add(product(distance + wide, angle))
             .saturating_add(Fx::from_bits(1 << 8));
-        if dotted(pi, to_centre).abs() > limit {
+        if pi.dot_once(to_centre).abs() > limit {
             ruled_out |= 1 << index;
         }
     }
@@ -150,12 +150,6 @@ fn scaled(v: Vec3, s: Fx) -> Vec3 {
 #[inline(never)]
 fn product(a: Fx, b: Fx) -> Fx {
     a.saturating_mul(b)
-}
-
-/// `u.dot(v)`, out of line: a few times a row and light.
-#[inline(never)]
-fn dotted(u: Vec3, v: Vec3) -> Fx {
-    u.dot(v)
 }
 
 /// `num / den` for positive `den`, rounded up, or `None` from 1 up: an angle that wide rules

@@ -597,7 +597,7 @@ impl Camera {
     /// Any `u16` row: off the screen, its direction towards column 0 is scaled to fit.
     pub(crate) fn row_plane_normal(&self, row: u16) -> Option<Vec3> {
         self.right
-            .cross(self.towards(0, row.into()))
+            .cross_once(self.towards(0, row.into()))
             .try_normalize()
     }
 
@@ -613,7 +613,7 @@ impl Camera {
     pub(crate) fn column_span(&self, centre: Vec3, radius: Fx) -> Option<(i16, i16)> {
         let to_centre = centre - self.eye;
         let view = self.forward.try_normalize()?;
-        let (x, z) = (self.right.dot(to_centre), view.dot(to_centre));
+        let (x, z) = (self.right.dot_once(to_centre), view.dot_once(to_centre));
         let (near, far) = (z - radius, z + radius);
         if near < Fx::from_bits(1 << 12) {
             return None;
