@@ -1,7 +1,7 @@
 //! The exact integer square root, kept in one place so that it can be swapped by measurement.
 
 use crate::numbers::fx::{top_word, wide_mul_u32};
-use crate::numbers::reciprocal::rsqrt;
+use crate::numbers::reciprocal::{rsqrt, rsqrt_unit};
 
 /// `floor(sqrt(x))` for every `u64`, exactly.
 ///
@@ -9,11 +9,10 @@ use crate::numbers::reciprocal::rsqrt;
 /// the Q16.16 square root of `v`, truncated.
 ///
 /// The estimate is `x · (1/√x)` from the table-seeded reciprocal square root that normalises
-/// vectors, with a Newton step (good to about 2⁻²⁸), then corrected by whole steps until
-/// `r² ≤ x < (r + 1)²` holds: one step or none for the values the renderer meets, at most a
-/// few dozen anywhere. Measured under QEMU in a loop on 2⁴⁰-sized arguments (the loop's own
-/// cost included), it took 208 instructions on a Cortex-M4F where core's `u64::isqrt` took
-/// 250, and 1 229 on a Cortex-M0 against 1 286.
+/// vectors (to 2⁻²⁰·⁶, within 4 of the root below 2⁴⁴), with a Newton step from 2⁴⁴ up (good
+/// to about 2⁻²⁸), then corrected by whole steps until `r² ≤ x < (r + 1)²` holds: a few steps
+/// or none for the values the renderer meets, at most a few dozen anywhere. How it compares
+/// with core's `u64::isqrt` is measured in docs/PERFORMANCE.md.
 ///
 /// ```
 /// assert_eq!(fixray::isqrt(0), 0);
@@ -26,12 +25,7 @@ pub const fn isqrt(x: u64) -> u64 {
     if x < 2 {
         return x;
     }
-    let (y, half) = rsqrt(x); // 1/√x ≈ y · 2^−(30 + half), with x < 2^(2·half)
-    // √x = x · (1/√x). With m the top 32 bits of x, x ≈ m · 2^(2·half − 32), so
-    // √x ≈ m · y · 2^(half − 62).
-    let p = 2 * half;
-    let m = top_word(x, p);
-    let mut r = wide_mul_u32(m, y) >> (62 - half);
+    let mut r = estimate(x);
     while !square_at_most(r, x) {
         r -= 1;
     }
@@ -39,6 +33,20 @@ pub const fn isqrt(x: u64) -> u64 {
         r += 1;
     }
     r
+}
+
+/// `√x` for `x ≥ 2`, to within 4 below 2⁴⁴ and 8 above (the tests find 2 and 3): [`isqrt`]'s
+/// start.
+#[inline]
+const fn estimate(x: u64) -> u64 {
+    // 1/√x ≈ y · 2^−(30 + half), with x < 2^(2·half). Below 2⁴⁴ the table's seed alone
+    // (2⁻²⁰·⁶ of it) leaves the estimate within 4 of the root, a few whole steps, where the
+    // Newton step would cost three 64-bit products; the sphere tests' roots are there.
+    let (y, half) = if x < 1 << 44 { rsqrt_unit(x) } else { rsqrt(x) };
+    // √x = x · (1/√x). With m the top 32 bits of x, x ≈ m · 2^(2·half − 32), so
+    // √x ≈ m · y · 2^(half − 62).
+    let m = top_word(x, 2 * half);
+    wide_mul_u32(m, y) >> (62 - half)
 }
 
 /// [`isqrt`], out of line: for the set-up work of a frame or a row (lengths, the balls that
@@ -69,6 +77,28 @@ mod tests {
         for x in 0..(1u64 << 22) {
             assert!(is_floor_sqrt(x, isqrt(x)), "isqrt({x}) = {}", isqrt(x));
         }
+    }
+
+    #[test]
+    fn the_estimate_is_within_four_of_the_root_below_two_to_the_44() {
+        // The correction steps make the root exact whatever the estimate; its accuracy is what
+        // keeps them few. Every bit length, each end of it, and random values between.
+        let mut rng = crate::xorshift::XorShift(0x2545_f491_4f6c_dd1d);
+        let (mut worst_low, mut worst_high) = (0u64, 0u64);
+        for bits in 2..64 {
+            let (low, high) = (1u64 << (bits - 1), (1u64 << bits) - 1);
+            let random = (0..20_000).map(|_| low | (rng.next() & (high >> 1)));
+            for x in [low, high].into_iter().chain(random) {
+                let off = super::estimate(x).abs_diff(x.isqrt());
+                if x < 1 << 44 {
+                    worst_low = worst_low.max(off);
+                } else {
+                    worst_high = worst_high.max(off);
+                }
+            }
+        }
+        assert!(worst_low <= 4, "{worst_low} steps below 2⁴⁴");
+        assert!(worst_high <= 8, "{worst_high} steps from 2⁴⁴ up");
     }
 
     #[test]
