@@ -4,7 +4,7 @@ use crate::geometry::hit::Hit;
 use crate::geometry::plane::Plane;
 use crate::geometry::ray::Ray;
 use crate::geometry::sphere::Sphere;
-use crate::numbers::fx::Fx;
+use crate::numbers::fx::{self, Fx};
 
 /// The geometry of an object.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -25,12 +25,25 @@ impl Shape {
         }
     }
 
-    /// The distance `t` to the first hit alone: what testing shadow rays needs (a sphere's
-    /// without its point; a plane's from its whole hit, which costs no more).
+    /// The distance `t` to the first hit alone (a sphere's without its point; a plane's from
+    /// its whole hit, which costs no more): what [`Shape::blocks`] answers from, for tests.
+    #[cfg(test)]
     pub(crate) fn hit_distance(&self, ray: &Ray) -> Option<Fx> {
         match self {
             Shape::Plane(p) => p.hit_distance(ray),
             Shape::Sphere(s) => s.hit_distance(ray),
+        }
+    }
+
+    /// Whether `ray` meets this shape nearer than `√distance_squared` (a Q32.32 value), as
+    /// [`Shape::hit_distance`] finds it: a shadow ray's question.
+    pub(crate) fn blocks(&self, ray: &Ray, distance_squared: u64) -> bool {
+        match self {
+            Shape::Plane(p) => p.hit_distance(ray).is_some_and(|t| {
+                let t = t.to_bits() as u32;
+                fx::wide_mul_u32(t, t) < distance_squared
+            }),
+            Shape::Sphere(s) => s.blocks(ray, distance_squared),
         }
     }
 

@@ -431,12 +431,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         light: usize,
         among: u32,
     ) -> bool {
-        let blocks = |object: &Object| {
-            object.shape.hit_distance(ray).is_some_and(|t| {
-                let t = t.to_bits() as u32;
-                fx::wide_mul_u32(t, t) < distance_squared
-            })
-        };
+        let blocks = |object: &Object| object.shape.blocks(ray, distance_squared);
         let Some(cones) = self.cones().get(light) else {
             // Not one of the scene's lights: no cones to go by.
             return (self.objects().iter().enumerate()).any(|(i, o)| i != leaving && blocks(o));
