@@ -90,10 +90,10 @@
 //!
 //! | chip | [`Viewport::render`], one-row buffer | `picture::<Rgb565, 160>()?.draw` |
 //! | --- | ---: | ---: |
-//! | Cortex-M0 (`thumbv6m-none-eabi`) | 2 592 / 3 440 | 3 088 / 3 936 |
-//! | Cortex-M3 (`thumbv7m-none-eabi`) | 2 176 / 3 016 | 2 680 / 3 520 |
-//! | Cortex-M4F (`thumbv7em-none-eabihf`) | 2 176 / 3 028 | 2 680 / 3 532 |
-//! | RV32IMC (`riscv32imc-unknown-none-elf`) | 1 724 / 2 764 | 2 220 / 3 260 |
+//! | Cortex-M0 (`thumbv6m-none-eabi`) | 2 584 / 3 440 | 3 080 / 3 936 |
+//! | Cortex-M3 (`thumbv7m-none-eabi`) | 2 228 / 3 060 | 2 732 / 3 564 |
+//! | Cortex-M4F (`thumbv7em-none-eabihf`) | 2 260 / 3 092 | 2 764 / 3 596 |
+//! | RV32IMC (`riscv32imc-unknown-none-elf`) | 1 760 / 2 800 | 2 256 / 3 296 |
 //!
 //! The classic scene, with mirrors, glass, highlights and three lights' shadows, takes the
 //! deepest path; a picture adds its row buffer (480 bytes at 160 columns) and a few words to
