@@ -22,7 +22,7 @@ impl Hit {
     #[inline]
     pub(crate) fn facing(t: Fx, point: Vec3, normal: Vec3, dir: Vec3) -> Hit {
         // Both are unit vectors: the exact sum cannot overflow.
-        let normal = if normal.dot_wide_exact(dir) > 0 {
+        let normal = if normal.dot_positive(dir) {
             -normal
         } else {
             normal
