@@ -98,7 +98,7 @@ impl Sphere {
     }
 
     /// `r²` in Q32.32, exactly: kept where a 64-bit product is a long sequence, formed where
-    /// it is a single instruction (which measured faster than the two loads there).
+    /// it is a single instruction, which costs less than loading two words.
     #[inline(always)]
     const fn radius_squared(&self) -> u64 {
         if fx::NO_LONG_MULTIPLY {
@@ -198,8 +198,9 @@ impl Sphere {
     /// answer does not need it: when the closest approach lies more than a radius (and
     /// [`SURELY_OUTSIDE`]) ahead of the origin and within [`FAR`], a hit is at `t_close − a`
     /// with `0 ≤ a ≤ r` (`a` is a root of at most `r²`), so every hit is near enough if
-    /// `t_close` is, and none if `t_close − r` is not. (On the Cortex-M0 that second copy of
-    /// the test measured 1.3 KB of flash for 3 instructions a pixel: it takes the square root.)
+    /// `t_close` is, and none if `t_close − r` is not. On the Cortex-M0, whose flash the
+    /// firmware is held to, this second copy of the test's start costs more than it saves:
+    /// there it takes the square root.
     pub(crate) fn blocks(&self, ray: &Ray, distance_squared: u64) -> bool {
         let square = |t: Fx| fx::wide_mul_u32(t.to_bits() as u32, t.to_bits() as u32);
         if !fx::NO_LONG_MULTIPLY {

@@ -268,10 +268,9 @@ fn spheres_before_planes<const N: usize, const L: usize>(
 
 /// Whether every hit on `sphere` of a ray from `eye` ([`Sphere::hit_distance`]) is nearer
 /// than that ray's hit on `plane`, if any (`Plane::hit_from`; `from_eye` is the plane's
-/// numerator for rays from `eye`): true
-/// where the sphere and the eye lie on the same side of the plane, the sphere's centre at
-/// least `r + m` from it and the eye at least `m`, with a margin `m` of 2⁻⁸ plus 2⁻¹² of
-/// `|C − eye|₁ + r`.
+/// numerator for rays from `eye`): true where the sphere and the eye lie on the same side of
+/// the plane, the sphere's centre at least `r + m` from it and the eye at least `m`, with a
+/// margin `m` of 2⁻⁸ plus 2⁻¹² of `|C − eye|₁ + r`.
 ///
 /// Heights are taken along the plane's rounded normal `n`, as its hit test takes them. A hit
 /// `t` on the sphere is either 0 (the eye itself, at least `m` from the plane) or within the
