@@ -13,4 +13,9 @@ impl XorShift {
         *s ^= *s << 17;
         *s
     }
+
+    /// A value drawn evenly from `−range..range`, from the state's top 24 bits.
+    pub(crate) fn signed(&mut self, range: f32) -> f32 {
+        ((self.next() >> 40) as f32 / (1u64 << 24) as f32 * 2.0 - 1.0) * range
+    }
 }

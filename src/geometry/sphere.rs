@@ -333,10 +333,7 @@ mod tests {
         // squared distances at and about the hit's own, the closest approach's and the near
         // side's: `blocks` must give the answer `hit_distance` gives, everywhere.
         let mut rng = crate::xorshift::XorShift(0xb10c_5ed0_5eed_0001);
-        let mut next = |range: f32| {
-            let seed = rng.next();
-            ((seed >> 40) as f32 / (1u64 << 24) as f32 * 2.0 - 1.0) * range
-        };
+        let mut next = |range: f32| rng.signed(range);
         let (mut cases, mut blocked) = (0u32, 0u32);
         for case in 0..20_000 {
             let r = 0.05 + next(1.0).abs() * 30.0;

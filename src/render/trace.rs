@@ -75,7 +75,20 @@ impl<const N: usize, const L: usize> Scene<N, L> {
                 (best, nearest, known) = (t, index, hit);
             }
         }
-        // Distances first; a sphere's hit point and normal only for the nearest.
+        self.hit_of_nearest(ray, nearest, best, known)
+    }
+
+    /// The hit on object `nearest`, found at distance `best` along `ray`: `known` where its
+    /// distance came with it (a plane's), otherwise a sphere's hit point and normal, made for
+    /// the nearest object only; `None` where no object was met (`nearest` is none).
+    #[inline(always)]
+    pub(crate) fn hit_of_nearest(
+        &self,
+        ray: &Ray,
+        nearest: usize,
+        best: Fx,
+        known: Option<Hit>,
+    ) -> Option<SceneHit> {
         let hit = match known {
             Some(hit) => hit,
             None => self

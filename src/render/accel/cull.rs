@@ -61,7 +61,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     #[doc(hidden)]
     #[must_use]
     pub fn shoot_among(&self, ray: &Ray, among: u64) -> Option<SceneHit> {
-        self.nearest_among(ray, among, |_, shape| shape.meet(ray))
+        self.nearest_among(ray, [among, 0], 0, |_, shape| shape.meet(ray))
     }
 
     /// [`Scene::shoot_among`] for a ray from `eye.origin()`, with what all such rays share
@@ -69,7 +69,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     ///
     /// The spheres are tried before the planes: a hit on a sphere that lies wholly before
     /// every plane ([`Eye`]'s `before_planes`) is nearer than any plane's, and then the planes
-    /// need no test. Ties go to the lower index, as in [`Scene::shoot_among`].
+    /// need no test.
     // In line on the Armv7-M cores; out of line on ARMv6-M and RV32, within the flash the
     // firmware is held to.
     #[cfg_attr(
@@ -81,49 +81,13 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         inline(never)
     )]
     pub(crate) fn shoot_from_eye(&self, ray: &Ray, among: u64, eye: &Eye<N>) -> Option<SceneHit> {
-        let among = among & self.present();
-        let (mut rest, mut planes) = (among & !eye.planes, among & eye.planes);
-        // Hits lie within FAR, so any hit is nearer than MAX.
-        let (mut best, mut nearest, mut known) = (Fx::MAX, usize::MAX, None);
-        let distance = |index: usize, object: &Object| match object.shape {
-            Shape::Plane(plane) => plane
-                .hit_from(ray, eye.numerator(index))
-                .map(|hit| (hit.t, Some(hit))),
-            Shape::Sphere(sphere) => sphere.hit_distance(ray).map(|t| (t, None)),
-        };
-        let mut try_object = |index: usize, object: &Object, nearest: &mut usize| {
-            if let Some((t, hit)) = distance(index, object)
-                && (t < best || (t == best && index < *nearest))
-            {
-                (best, *nearest, known) = (t, index, hit);
+        let order = [among & !eye.planes, among & eye.planes];
+        self.nearest_among(ray, order, eye.before_planes, |index, shape| match shape {
+            Shape::Plane(plane) => {
+                let hit = plane.hit_from(ray, eye.numerator(index))?;
+                Some((hit.t, Some(hit)))
             }
-        };
-        loop {
-            while rest != 0 {
-                let index = rest.trailing_zeros() as usize;
-                rest &= rest - 1;
-                try_object(index, &self.objects()[index], &mut nearest);
-            }
-            let before = nearest < 64 && eye.before_planes & (1 << nearest) != 0;
-            if planes == 0 || before {
-                break;
-            }
-            (rest, planes) = (planes, 0);
-        }
-        for (index, object) in self.objects().iter().enumerate().skip(64) {
-            try_object(index, object, &mut nearest);
-        }
-        let hit = match known {
-            Some(hit) => hit,
-            None => self
-                .objects()
-                .get(nearest)?
-                .shape
-                .sphere_hit_at(ray, best)?,
-        };
-        Some(SceneHit {
-            hit,
-            object: nearest,
+            Shape::Sphere(sphere) => Some((sphere.hit_distance(ray)?, None)),
         })
     }
 
@@ -142,47 +106,45 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         Some(SceneHit { hit, object: index })
     }
 
-    /// The nearest hit among the objects of `among` (see [`Scene::shoot_among`]), with
-    /// `distance(index, shape)` giving each one's `t`, and its whole hit where that came at no
-    /// extra cost (a plane's point is found before its distance).
+    /// The nearest hit among the objects of `first`, then of `then` unless the nearest of
+    /// `first` is one of `enough` (bit `i` for object `i`; objects past the 64th are always
+    /// tried, last), with `distance(index, shape)` giving each one's `t`, and its whole hit
+    /// where that came at no extra cost (a plane's point is found before its distance). Ties
+    /// go to the lower index, whatever the order (see [`Scene::shoot_among`]).
     #[inline]
     fn nearest_among(
         &self,
         ray: &Ray,
-        among: u64,
+        [first, then]: [u64; 2],
+        enough: u64,
         distance: impl Fn(usize, &Shape) -> Option<(Fx, Option<Hit>)>,
     ) -> Option<SceneHit> {
         // Hits lie within FAR, so any hit is nearer than MAX.
         let (mut best, mut nearest, mut known) = (Fx::MAX, usize::MAX, None);
-        let mut try_object = |index: usize, object: &Object| {
+        let mut try_object = |index: usize, object: &Object, nearest: &mut usize| {
             if let Some((t, hit)) = distance(index, &object.shape)
-                && t < best
+                && (t < best || (t == best && index < *nearest))
             {
-                (best, nearest, known) = (t, index, hit);
+                (best, *nearest, known) = (t, index, hit);
             }
         };
         // Only the set bits, lowest first: culled objects cost nothing.
-        let mut rest = among & self.present();
-        while rest != 0 {
-            let index = rest.trailing_zeros() as usize;
-            rest &= rest - 1;
-            try_object(index, &self.objects()[index]);
+        let (mut rest, mut then) = (first & self.present(), then & self.present());
+        loop {
+            while rest != 0 {
+                let index = rest.trailing_zeros() as usize;
+                rest &= rest - 1;
+                try_object(index, &self.objects()[index], &mut nearest);
+            }
+            if then == 0 || (nearest < 64 && enough & (1 << nearest) != 0) {
+                break;
+            }
+            (rest, then) = (then, 0);
         }
         for (index, object) in self.objects().iter().enumerate().skip(64) {
-            try_object(index, object);
+            try_object(index, object, &mut nearest);
         }
-        let hit = match known {
-            Some(hit) => hit,
-            None => self
-                .objects()
-                .get(nearest)?
-                .shape
-                .sphere_hit_at(ray, best)?,
-        };
-        Some(SceneHit {
-            hit,
-            object: nearest,
-        })
+        self.hit_of_nearest(ray, nearest, best, known)
     }
 }
 
@@ -388,10 +350,7 @@ mod tests {
         // every row whose ray meets a sphere lies in the span of the row's ball, and on most
         // rows that span is narrower than the sphere's own.
         let mut rng = crate::xorshift::XorShift(0x5eed_0fba_1150_a11e);
-        let mut next = |range: f32| {
-            let seed = rng.next();
-            ((seed >> 40) as f32 / (1u64 << 24) as f32 * 2.0 - 1.0) * range
-        };
+        let mut next = |range: f32| rng.signed(range);
         let (mut rows, mut narrower, mut hits) = (0, 0, 0);
         for case in 0..300 {
             let eye = [next(40.0), next(40.0), next(40.0)];
