@@ -92,7 +92,7 @@
 //! | --- | ---: | ---: |
 //! | Cortex-M0 (`thumbv6m-none-eabi`) | 2 584 / 3 440 | 3 080 / 3 936 |
 //! | Cortex-M3 (`thumbv7m-none-eabi`) | 2 228 / 3 060 | 2 732 / 3 564 |
-//! | Cortex-M4F (`thumbv7em-none-eabihf`) | 2 260 / 3 092 | 2 764 / 3 596 |
+//! | Cortex-M4F (`thumbv7em-none-eabihf`) | 2 244 / 3 076 | 2 748 / 3 580 |
 //! | RV32IMC (`riscv32imc-unknown-none-elf`) | 1 760 / 2 800 | 2 256 / 3 296 |
 //!
 //! The classic scene, with mirrors, glass, highlights and three lights' shadows, takes the
