@@ -33,7 +33,7 @@ use crate::numbers::fx::{Fx, LIMIT};
 /// let short = Error::BufferLength { needed: 40, got: 39 };
 /// assert_eq!(short.to_string(), "row buffer holds 39 pixels where a row of the picture has 40");
 /// ```
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Clone, Copy, PartialEq, Eq)]
 #[non_exhaustive]
 pub enum Error {
     /// A float input was NaN or infinite.
@@ -284,14 +284,116 @@ impl fmt::Display for CameraProblem {
 /// Writes the range `min ..= max` as the messages state it: the overflow-safe range by name,
 /// a symmetric range as `±max`, and the smallest positive Q16.16 value as `2⁻¹⁶`.
 fn write_range(f: &mut fmt::Formatter<'_>, min: Fx, max: Fx) -> fmt::Result {
-    if min == -LIMIT && max == LIMIT {
-        write!(f, "the overflow-safe range ±{LIMIT}")
-    } else if min == -max {
+    let (min, max, limit) = (Decimal(min), Decimal(max), Decimal(LIMIT));
+    if min.0 == -LIMIT && max.0 == LIMIT {
+        write!(f, "the overflow-safe range ±{limit}")
+    } else if min.0 == -max.0 {
         write!(f, "±{max}")
-    } else if min == Fx::DELTA {
+    } else if min.0 == Fx::DELTA {
         write!(f, "2⁻¹⁶ (one Q16.16 step) to {max}")
     } else {
         write!(f, "{min} to {max}")
+    }
+}
+
+/// As `#[derive(Debug)]` writes it, with each Q16.16 bound to five decimals ([`Decimal`]).
+impl fmt::Debug for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match *self {
+            Error::NotFinite { quantity } => f
+                .debug_struct("NotFinite")
+                .field("quantity", &quantity)
+                .finish(),
+            Error::OutOfRange { quantity, min, max } => f
+                .debug_struct("OutOfRange")
+                .field("quantity", &quantity)
+                .field("min", &Decimal(min))
+                .field("max", &Decimal(max))
+                .finish(),
+            Error::NonPositiveRadius => f.write_str("NonPositiveRadius"),
+            Error::ZeroVector { quantity } => f
+                .debug_struct("ZeroVector")
+                .field("quantity", &quantity)
+                .finish(),
+            Error::EmptyBounds => f.write_str("EmptyBounds"),
+            Error::CapacityExceeded { capacity } => f
+                .debug_struct("CapacityExceeded")
+                .field("capacity", &capacity)
+                .finish(),
+            Error::DegenerateCamera(problem) => {
+                f.debug_tuple("DegenerateCamera").field(&problem).finish()
+            }
+            Error::FieldOfViewTooNarrow { min_millidegrees } => f
+                .debug_struct("FieldOfViewTooNarrow")
+                .field("min_millidegrees", &min_millidegrees)
+                .finish(),
+            Error::FieldOfViewTooWide { max_millidegrees } => f
+                .debug_struct("FieldOfViewTooWide")
+                .field("max_millidegrees", &max_millidegrees)
+                .finish(),
+            Error::NoSuchObject { index, count } => f
+                .debug_struct("NoSuchObject")
+                .field("index", &index)
+                .field("count", &count)
+                .finish(),
+            Error::NoSuchLight { index, count } => f
+                .debug_struct("NoSuchLight")
+                .field("index", &index)
+                .field("count", &count)
+                .finish(),
+            Error::ColumnOutOfRange { col, cols } => f
+                .debug_struct("ColumnOutOfRange")
+                .field("col", &col)
+                .field("cols", &cols)
+                .finish(),
+            Error::RowOutOfRange { row, rows } => f
+                .debug_struct("RowOutOfRange")
+                .field("row", &row)
+                .field("rows", &rows)
+                .finish(),
+            Error::SizeMismatch { camera, target } => f
+                .debug_struct("SizeMismatch")
+                .field("camera", &camera)
+                .field("target", &target)
+                .finish(),
+            Error::BufferLength { needed, got } => f
+                .debug_struct("BufferLength")
+                .field("needed", &needed)
+                .field("got", &got)
+                .finish(),
+        }
+    }
+}
+
+/// A Q16.16 value written (by `Display` and `Debug` alike) to five decimals, rounded to
+/// nearest, trailing zeros dropped: as Q16.16 values lie at least 2⁻¹⁶ > 10⁻⁵ apart, no two
+/// write the same. The errors' own formatting: the `fixed` crate's exact decimals are several
+/// kilobytes of code on a microcontroller, which every firmware that writes an error carries.
+struct Decimal(Fx);
+
+impl fmt::Debug for Decimal {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        fmt::Display::fmt(self, f)
+    }
+}
+
+impl fmt::Display for Decimal {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let raw = self.0.to_bits();
+        // At most 2³¹ · 10⁵ before the shift: well within 64 bits.
+        let scaled = (raw.unsigned_abs() as u64 * 100_000 + (1 << 15)) >> 16;
+        let (whole, mut fraction) = (scaled / 100_000, (scaled % 100_000) as u32);
+        let sign = if raw < 0 && scaled != 0 { "-" } else { "" };
+        write!(f, "{sign}{whole}")?;
+        if fraction != 0 {
+            let mut digits = 5;
+            while fraction % 10 == 0 {
+                fraction /= 10;
+                digits -= 1;
+            }
+            write!(f, ".{fraction:0digits$}")?;
+        }
+        Ok(())
     }
 }
 
@@ -353,3 +455,70 @@ impl fmt::Display for Error {
 }
 
 impl core::error::Error for Error {}
+
+#[cfg(test)]
+mod tests {
+    extern crate std;
+    use super::*;
+    use std::format;
+
+    /// Every value writes a decimal that reads back as that value, to at most five decimals.
+    #[test]
+    fn decimals_read_back_as_the_values_written() {
+        let mut rng = crate::xorshift::XorShift(0xdec1_0a15_0000_0001);
+        let near_zero = -300_000..300_000;
+        let anywhere = (0..300_000).map(|_| (rng.next() >> 32) as i32);
+        let ends = [
+            i32::MIN,
+            i32::MIN + 1,
+            i32::MAX,
+            i32::MAX - 1,
+            1 << 16,
+            -(1 << 16),
+        ];
+        for raw in near_zero.chain(anywhere).chain(ends) {
+            let text = format!("{}", Decimal(Fx::from_bits(raw)));
+            let read: f64 = text.parse().unwrap();
+            assert_eq!(
+                (read * 65536.0).round() as i64,
+                raw as i64,
+                "{raw} wrote {text}"
+            );
+            let decimals = text.split_once('.').map_or(0, |(_, d)| d.len());
+            assert!(
+                decimals <= 5 && !text.ends_with('0') || decimals == 0,
+                "{text}"
+            );
+            assert_ne!(text, "-0");
+        }
+        assert_eq!(format!("{}", Decimal(Fx::DELTA)), "0.00002");
+        assert_eq!(format!("{:?}", Decimal(-Fx::from_num(0.5))), "-0.5");
+        assert_eq!(format!("{}", Decimal(-LIMIT)), "-1024");
+    }
+
+    #[test]
+    fn debug_writes_what_a_derive_would_with_decimal_bounds() {
+        let error = Error::OutOfRange {
+            quantity: Quantity::LightIntensity,
+            min: Fx::ZERO,
+            max: Fx::from_num(2.5),
+        };
+        assert_eq!(
+            format!("{error:?}"),
+            "OutOfRange { quantity: LightIntensity, min: 0, max: 2.5 }"
+        );
+        let row = Error::RowOutOfRange { row: 9, rows: 8 };
+        assert_eq!(format!("{row:?}"), "RowOutOfRange { row: 9, rows: 8 }");
+        assert_eq!(format!("{:?}", Error::EmptyBounds), "EmptyBounds");
+        let camera = Error::DegenerateCamera(CameraProblem::NoPixels);
+        assert_eq!(format!("{camera:?}"), "DegenerateCamera(NoPixels)");
+        let sizes = Error::SizeMismatch {
+            camera: (4, 3),
+            target: (8, 6),
+        };
+        assert_eq!(
+            format!("{sizes:?}"),
+            "SizeMismatch { camera: (4, 3), target: (8, 6) }"
+        );
+    }
+}
