@@ -334,21 +334,24 @@ impl Vec3 {
             square == self.length_squared_wide(),
             "normalize_with_square: square is not the vector's squared length"
         );
-        if square == 0 {
+        let Some((y, shift)) = unit_scale(square) else {
             return None;
-        }
-        // 1/‖self‖ in units of 2⁻¹⁶ is y · 2⁻⁽³⁰⁺ˢʰⁱᶠᵗ⁾ · 2¹⁶.
-        let (y, shift) = rsqrt_unit(square);
-        let shift = 14 + shift;
-        // |c| ≤ ‖self‖ and y·‖self‖ ≈ 2^(30 + shift − 14): each result is at most 2¹⁶ and a bit.
-        const fn scale(c: Fx, y: u32, shift: u32) -> Fx {
-            Fx::from_bits(fx::mul_shift_round(c.to_bits(), y as i32, shift) as i32)
-        }
+        };
         Some(Vec3::new(
-            scale(self.x, y, shift),
-            scale(self.y, y, shift),
-            scale(self.z, y, shift),
+            unit_part(self.x, y, shift),
+            unit_part(self.y, y, shift),
+            unit_part(self.z, y, shift),
         ))
+    }
+
+    /// One component of [`Vec3::normalize_with_square`]'s unit vector, `c` (one of `self`'s),
+    /// bit for bit, without the other two: where the unit vector is only dotted with an axis.
+    #[inline]
+    pub(crate) const fn unit_component_with_square(c: Fx, square: u64) -> Option<Fx> {
+        match unit_scale(square) {
+            Some((y, shift)) => Some(unit_part(c, y, shift)),
+            None => None,
+        }
     }
 
     /// The unit vector along `self`, or the zero vector when `self` is zero.
@@ -356,6 +359,26 @@ impl Vec3 {
     pub fn normalize_or_zero(self) -> Vec3 {
         self.try_normalize().unwrap_or(Vec3::ZERO)
     }
+}
+
+/// `1/‖v‖` for a vector `v` whose squared length is `square`, as a factor `y` and a shift
+/// (`y · 2^−shift · 2¹⁶`), or `None` for the zero vector: what each of a unit vector's
+/// components is multiplied by ([`unit_part`]).
+#[inline(always)]
+const fn unit_scale(square: u64) -> Option<(u32, u32)> {
+    if square == 0 {
+        return None;
+    }
+    // 1/‖self‖ in units of 2⁻¹⁶ is y · 2⁻⁽³⁰⁺ˢʰⁱᶠᵗ⁾ · 2¹⁶.
+    let (y, shift) = rsqrt_unit(square);
+    Some((y, 14 + shift))
+}
+
+/// The unit vector's component along `c` (a component of `v`), from [`unit_scale`]'s
+/// factor: `|c| ≤ ‖v‖` and `y·‖v‖ ≈ 2^(30 + shift − 14)`, so it is at most 2¹⁶ and a bit.
+#[inline(always)]
+const fn unit_part(c: Fx, y: u32, shift: u32) -> Fx {
+    Fx::from_bits(fx::mul_shift_round(c.to_bits(), y as i32, shift) as i32)
 }
 
 /// [`Vec3::dot_exact`] of raw values where a 64-bit product is a long sequence: each product

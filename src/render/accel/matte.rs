@@ -12,12 +12,18 @@
 //! made). Each hit is then lit by the plain path's own functions (`Scene::reaches`, which
 //! takes the light's direction and casts the shadow ray, and `Scene::lit`), so the pixels are
 //! bit for bit [`Scene::trace`]'s.
+//!
+//! Most of a level floor faces along an axis, and most of its columns lie where no sphere's
+//! shadow can fall (`accel/shadow_columns.rs`): there a hit needs no shadow ray, and so not
+//! the light's unit vector either, only its cosine with the normal, which is one of its
+//! components ([`Axis`]). Those columns are walked apart from the rest of the run.
 
 use crate::geometry::plane::{Numerator, Plane, far_reach};
 use crate::numbers::fx::{self, Fx};
 use crate::numbers::reciprocal::Scale;
 use crate::numbers::vec3::Vec3;
 use crate::render::accel::row_rays::RowSquares;
+use crate::render::accel::shadow_columns::RunLine;
 use crate::render::camera::Camera;
 use crate::render::trace::Surface;
 use crate::scene::Scene;
@@ -52,14 +58,15 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         let Some(object) = self.objects().get(index) else {
             return; // not reached: the run's object is one of the scene's
         };
-        let (eye, step) = (camera.eye(), camera.column_step());
         let normal = plane.facing(run.num);
+        let axis = Axis::of(normal);
         // For each light, the set a shadow ray from the run tries, or `None` where it can
         // meet nothing: of the objects `Scene::occluded` walks (`Scene::walked`), it tries
         // only those in the row's set.
         let mut shadow_sets = [None; L];
         if self.shadows() {
-            for (light, test) in shadow_sets.iter_mut().enumerate() {
+            let lights = self.lights().len();
+            for (light, test) in shadow_sets.iter_mut().enumerate().take(lights) {
                 let among = plane_shadowers.get(light).copied().unwrap_or(!0);
                 let none = self
                     .walked(index, light)
@@ -67,18 +74,102 @@ impl<const N: usize, const L: usize> Scene<N, L> {
                 *test = (!none).then_some(among);
             }
         }
-        let sky = self.background().plain_colour();
         let mut at = Surface {
             index,
             point: Vec3::ZERO,
             normal,
         };
-        let mut towards = run.towards;
-        let mut square = RowSquares::new(towards, step);
+        let (eye, step, towards) = (camera.eye(), camera.column_step(), run.towards);
         // Where the plane is not ahead of the row, nothing is within reach.
         let scale = plane.scale_along(run.num, plane.normal().dot_wide_exact(towards));
         let reach = scale.map_or(0, far_reach);
-        let mut offsets = Offsets::new(scale.unwrap_or(Scale { m: 0, shift: 1 }), towards, step);
+        let scale = scale.unwrap_or(Scale { m: 0, shift: 1 });
+        let walk = |from: usize| Walk {
+            towards: towards.plus(step.times(from as i32)),
+            scale,
+            reach,
+        };
+        let material = &object.material;
+        // On a plane facing along an axis, the columns where no shadow ray needs a test (all
+        // but those some sphere may shadow, `shadowed_columns`) take only the cosine; the
+        // others, and every column of any other plane, the light's whole unit vector and the
+        // shadow ray.
+        let shadowed = match axis {
+            Some(_) if shadow_sets.iter().all(Option::is_none) => 0..0,
+            Some(_) => {
+                let line = RunLine {
+                    eye,
+                    scale,
+                    reach,
+                    towards,
+                    step,
+                    len: out.len(),
+                };
+                self.shadowed_columns(index, plane.normal(), &line, &shadow_sets)
+            }
+            None => 0..out.len(),
+        };
+        let (before, rest) = out.split_at_mut(shadowed.start.min(out.len()));
+        let (inside, after) = rest.split_at_mut(shadowed.len().min(rest.len()));
+        let lights = self.lights();
+        // One loop for both kinds of stretch, told apart by `axis`: a copy of the loop for each
+        // kind saves under 1 % of a frame, for over a kilobyte of flash.
+        let mut shade = |point: Vec3, axis: Option<Axis>| {
+            let mut diffuse = Fx::ZERO;
+            if let Some(axis) = axis {
+                for light in lights {
+                    if let Some(cos) = axis.cosine(light.position.minus(point)) {
+                        diffuse = diffuse.saturating_add(fx::mul_unit(light.intensity, cos));
+                    }
+                }
+            } else {
+                at.point = point;
+                for (i, (light, &test)) in lights.iter().zip(&shadow_sets).enumerate() {
+                    if let Some((_, cos)) = self.reaches(i, light, &at, test) {
+                        diffuse = diffuse.saturating_add(fx::mul_unit(light.intensity, cos));
+                    }
+                }
+            }
+            to_rgb(self.lit(material, diffuse, object.colour_at(point)))
+        };
+        if axis.is_some() {
+            self.matte_loop(camera, plane, walk(0), before, axis, &mut shade);
+            self.matte_loop(camera, plane, walk(shadowed.end), after, axis, &mut shade);
+        }
+        self.matte_loop(
+            camera,
+            plane,
+            walk(shadowed.start),
+            inside,
+            None,
+            &mut shade,
+        );
+    }
+
+    /// The walk along a stretch of a [`MatteRun`] that starts at `walk`: each column's hit on
+    /// `plane`, shaded by `shade` (given `axis`, which is `None` where shadow rays are cast),
+    /// or the background where the plane is not met. Started at any column, it meets the same
+    /// values as a walk from the run's start: the steps are exact.
+    // Out of line: one copy, however many stretches a run has.
+    #[inline(never)]
+    fn matte_loop(
+        &self,
+        camera: &Camera,
+        plane: &Plane,
+        walk: Walk,
+        out: &mut [Rgb],
+        axis: Option<Axis>,
+        shade: &mut impl FnMut(Vec3, Option<Axis>) -> Rgb,
+    ) {
+        let (eye, step) = (camera.eye(), camera.column_step());
+        let sky = self.background().plain_colour();
+        let Walk {
+            mut towards,
+            scale,
+            reach,
+        } = walk;
+        let mut square = RowSquares::new(towards, step);
+        let mut offsets = Offsets::new(scale, towards, step);
         for pixel in out.iter_mut() {
             let s = square.now(towards);
             let hit = if s <= reach {
@@ -87,16 +178,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
                 None
             };
             *pixel = match (hit, sky) {
-                (Some(point), _) => {
-                    at.point = point;
-                    let mut diffuse = Fx::ZERO;
-                    for (i, (light, &test)) in self.lights().iter().zip(&shadow_sets).enumerate() {
-                        if let Some((_, cos)) = self.reaches(i, light, &at, test) {
-                            diffuse = diffuse.saturating_add(fx::mul_unit(light.intensity, cos));
-                        }
-                    }
-                    to_rgb(self.lit(&object.material, diffuse, object.colour_at(point)))
-                }
+                (Some(point), _) => shade(point, axis),
                 // A plain sky's colour, which `Background::along` gives whatever the ray.
                 (None, Some(sky)) => sky,
                 (None, None) => self.background_along(camera, towards, s),
@@ -114,6 +196,59 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     fn background_along(&self, camera: &Camera, towards: Vec3, square: u64) -> Rgb {
         let ray = camera.ray_along(towards, square);
         rgb_of(self.background().along(ray.dir))
+    }
+}
+
+/// Where a stretch of a run starts: the direction towards its first column, and the plane's
+/// scale and reach, which the whole run shares.
+#[derive(Clone, Copy)]
+struct Walk {
+    towards: Vec3,
+    scale: Scale,
+    reach: u64,
+}
+
+/// A facing normal along a coordinate axis, `±1` in one component and 0 in the others, as a
+/// level floor's or an upright wall's is: its dot product with a unit vector is that vector's
+/// component, rounded as [`Vec3::dot_exact`] rounds it (exactly), so where no shadow ray needs
+/// the light's whole unit vector, the cosine needs one component of it.
+#[derive(Clone, Copy)]
+struct Axis {
+    /// 0, 1 or 2 for x, y or z.
+    index: u8,
+    negative: bool,
+}
+
+impl Axis {
+    fn of(normal: Vec3) -> Option<Axis> {
+        let one = Fx::ONE.to_bits();
+        let c = [normal.x, normal.y, normal.z].map(Fx::to_bits);
+        let index = match c {
+            [_, 0, 0] => 0,
+            [0, _, 0] => 1,
+            [0, 0, _] => 2,
+            _ => return None,
+        };
+        let value = c[index];
+        (value.abs() == one).then_some(Axis {
+            index: index as u8,
+            negative: value < 0,
+        })
+    }
+
+    /// What `Scene::reaches` gives as the cosine of `to_light` (from the hit to the light) on a
+    /// surface facing along the axis, without a shadow ray: `None` where it is not positive.
+    #[inline(always)]
+    fn cosine(self, to_light: Vec3) -> Option<Fx> {
+        let square = to_light.length_squared_wide();
+        let c = match self.index {
+            0 => to_light.x,
+            1 => to_light.y,
+            _ => to_light.z,
+        };
+        let c = Vec3::unit_component_with_square(c, square)?;
+        let cos = if self.negative { -c } else { c };
+        (cos > Fx::ZERO).then_some(cos)
     }
 }
 

@@ -4,6 +4,7 @@
 //! - `runs`: a row cut into runs of columns that can meet the same objects (culling by the
 //!   row's plane, each sphere's column span, and planes every ray of a run points away from);
 //! - `shadow_rows`: the spheres that can shadow a row's hits on planes, from each light;
+//! - `shadow_columns`: the columns of a run on a plane that a sphere can shadow;
 //! - `matte`: a run that can meet one matte plane only, on a row parallel to it, found by
 //!   additions and shaded in one loop, without rays;
 //!
@@ -15,4 +16,5 @@ pub(crate) mod cull;
 pub(crate) mod matte;
 pub(crate) mod row_rays;
 pub(crate) mod runs;
+pub(crate) mod shadow_columns;
 pub(crate) mod shadow_rows;

@@ -119,12 +119,7 @@ fn far_from_row<const N: usize, const L: usize>(
         let Shape::Sphere(sphere) = object.shape else {
             continue;
         };
-        let radius = sphere.radius();
-        // The sphere as a shadow ray may meet it: its test's rounding, as `shadowers.rs`
-        // allows for it (√r/32 ≤ (r + 1)/64), and the ray's rounded direction, off the
-        // exact one by 2⁻¹⁵ over at most FAR + r, which the test's closest point lies within.
-        let wide: Fx =
-            radius + ((radius + Fx::ONE) >> 6) + Fx::from_bits(1 << 8) + ((FAR + radius) >> 15);
+        let wide = blocking_radius(sphere.radius());
         let to_centre = sphere.centre() - light;
         // At least the distance to the centre; within ±2048 · 3.
         let distance = Fx::from_bits(to_centre.l1_raw() as i32);
@@ -138,6 +133,14 @@ fn far_from_row<const N: usize, const L: usize>(
         }
     }
     Some(ruled_out)
+}
+
+/// How near a sphere of radius `radius` the exact line from a hit to a light passes where a
+/// shadow ray along it is blocked: the radius widened by the test's rounding, as
+/// `shadowers.rs` allows for it (√r/32 ≤ (r + 1)/64), and by the ray's rounded direction, off
+/// the exact one by 2⁻¹⁵ over at most FAR + r, which the test's closest point lies within.
+pub(crate) fn blocking_radius(radius: Fx) -> Fx {
+    radius + ((radius + Fx::ONE) >> 6) + Fx::from_bits(1 << 8) + ((FAR + radius) >> 15)
 }
 
 /// `v.scale(s)`, out of line: once a row and light, twice.
