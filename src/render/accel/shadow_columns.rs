@@ -7,9 +7,8 @@
 //! the test); seen along the plane's normal `n`, so does its shadow on the plane, the line from
 //! `P` to the light's foot. That is `|(n × (C − L))·(P − L)| ≤ ρ·‖n‖·‖P − L‖'`, with `‖·‖'` the
 //! length along the plane: the left side is affine in `k`, the right side at most its value at
-//! the farther end of any interval of columns, as `‖P − L‖` is convex in `k`. So two divisions
-//! bound the columns where the sphere can matter, and a second pass with the bound taken over
-//! those columns only narrows them. Every rounding of the set-up widens the bound, never
+//! the farther end of the run, as `‖P − L‖` is convex in `k`. So two divisions bound the
+//! columns where the sphere can matter. Every rounding of the set-up widens the bound, never
 //! narrows it: a column left out is one whose shadow ray the sphere cannot block.
 
 use core::ops::Range;
@@ -69,30 +68,27 @@ impl RunLine {
         // is a unit vector to within 2⁻¹⁵, so ρ·(1 + 2⁻¹⁴) and two units cover both.
         let rho = blocking_radius(sphere.radius());
         let rho: Fx = rho + (rho >> 14) + Fx::from_bits(2);
-        // `g = n × (C − L)`, rounded: `g·(P − L)` is the affine side; a hit's rounding moves it
-        // by at most half a unit of `P` a component, `|g|₁ / 2` in Q32.32.
+        // The run's ends, from the light.
+        let (start, end) = (self.point(0) - light, self.point(last) - light);
+        // `g = n × (C − L)`, rounded: `g·(P − L)` is the affine side. A hit's rounding moves it
+        // by at most half a unit of `P` a component, `|g|₁ / 2` in Q32.32: the line through
+        // its values at the ends is within `slack` of every column's (the ends' roundings and
+        // the column's), and the coarse shifts move it by under two coarse units.
         let g = normal.cross_once(sphere.centre() - light);
         let slack = g.l1_raw();
-        let side = |k: usize| g.dot_wide_exact(self.point(k) - light) >> COARSE;
-        let (first, end) = (side(0), side(last));
-        // The affine side through the two ends, in coarse units, is within `slack` of every
-        // column's (the ends' own roundings, and the column's), and within one coarse unit of
-        // the exact affine side's coarse value (the shifts).
-        let (mut lo, mut hi) = (0i64, last as i64);
-        for _ in 0..2 {
-            // The farthest a hit of columns lo..=hi lies from the light: at most the farther
-            // end's exact distance (convexity), which `length` truncates by under a unit and
-            // the ends' and the column's roundings move by under a unit each.
-            let far = |k: i64| (self.point(k as usize) - light).length().to_bits() as i64;
-            let far = far(lo).max(far(hi)) + 3;
-            let bound = ((rho.to_bits() as i64 * far + slack) >> COARSE) + 2;
-            let Some((from, to)) = solve(first, end, last as i64, bound) else {
-                return 0..0;
-            };
-            (lo, hi) = (lo.max(from), hi.min(to));
-            if lo > hi {
-                return 0..0;
-            }
+        let side = |p: Vec3| g.dot_wide_exact(p) >> COARSE;
+        // The farthest a hit lies from the light: at most the farther end's exact distance
+        // (convexity), which `length` truncates by under a unit and the ends' and the
+        // column's roundings move by under a unit each. (Taken again over the columns found,
+        // it narrows them, but measured slower than what it spares.)
+        let far = start.length().max(end.length()).to_bits() as i64 + 3;
+        let bound = ((rho.to_bits() as i64 * far + slack) >> COARSE) + 2;
+        let Some((lo, hi)) = solve(side(start), side(end), last as i64, bound) else {
+            return 0..0;
+        };
+        let (lo, hi) = (lo.max(0), hi.min(last as i64));
+        if lo > hi {
+            return 0..0;
         }
         lo as usize..hi as usize + 1
     }
