@@ -112,45 +112,45 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         let (before, rest) = out.split_at_mut(shadowed.start.min(out.len()));
         let (inside, after) = rest.split_at_mut(shadowed.len().min(rest.len()));
         let lights = self.lights();
-        // One loop for both kinds of stretch, told apart by `axis`: a copy of the loop for each
-        // kind saves under 1 % of a frame, for over a kilobyte of flash.
-        let mut shade = |point: Vec3, axis: Option<Axis>| {
-            let mut diffuse = Fx::ZERO;
-            if let Some(axis) = axis {
+        // Each kind of stretch its own loop, which keeps its own values in registers: one loop
+        // for both, told apart by a flag, measured 1 to 1.5 % slower and 1.3 KB smaller.
+        if let Some(axis) = axis {
+            let mut unshadowed = |point: Vec3| {
+                let mut diffuse = Fx::ZERO;
                 for light in lights {
                     if let Some(cos) = axis.cosine(light.position.minus(point)) {
                         diffuse = diffuse.saturating_add(fx::mul_unit(light.intensity, cos));
                     }
                 }
-            } else {
-                at.point = point;
-                for (i, (light, &test)) in lights.iter().zip(&shadow_sets).enumerate() {
-                    if let Some((_, cos)) = self.reaches(i, light, &at, test) {
-                        diffuse = diffuse.saturating_add(fx::mul_unit(light.intensity, cos));
-                    }
+                to_rgb(self.lit(material, diffuse, object.colour_at(point)))
+            };
+            self.matte_loop(camera, plane, walk(0), before, &mut unshadowed);
+            self.matte_loop(camera, plane, walk(shadowed.end), after, &mut unshadowed);
+        }
+        let mut shadowed_at = |point: Vec3| {
+            at.point = point;
+            let mut diffuse = Fx::ZERO;
+            for (i, (light, &test)) in lights.iter().zip(&shadow_sets).enumerate() {
+                if let Some((_, cos)) = self.reaches(i, light, &at, test) {
+                    diffuse = diffuse.saturating_add(fx::mul_unit(light.intensity, cos));
                 }
             }
             to_rgb(self.lit(material, diffuse, object.colour_at(point)))
         };
-        if axis.is_some() {
-            self.matte_loop(camera, plane, walk(0), before, axis, &mut shade);
-            self.matte_loop(camera, plane, walk(shadowed.end), after, axis, &mut shade);
-        }
         self.matte_loop(
             camera,
             plane,
             walk(shadowed.start),
             inside,
-            None,
-            &mut shade,
+            &mut shadowed_at,
         );
     }
 
     /// The walk along a stretch of a [`MatteRun`] that starts at `walk`: each column's hit on
-    /// `plane`, shaded by `shade` (given `axis`, which is `None` where shadow rays are cast),
-    /// or the background where the plane is not met. Started at any column, it meets the same
-    /// values as a walk from the run's start: the steps are exact.
-    // Out of line: one copy, however many stretches a run has.
+    /// `plane`, shaded by `shade`, or the background where the plane is not met. Started at
+    /// any column, it meets the same values as a walk from the run's start: the steps are
+    /// exact.
+    // Out of line: one copy for each kind of stretch, however many stretches a run has.
     #[inline(never)]
     fn matte_loop(
         &self,
@@ -158,8 +158,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         plane: &Plane,
         walk: Walk,
         out: &mut [Rgb],
-        axis: Option<Axis>,
-        shade: &mut impl FnMut(Vec3, Option<Axis>) -> Rgb,
+        shade: &mut impl FnMut(Vec3) -> Rgb,
     ) {
         let (eye, step) = (camera.eye(), camera.column_step());
         let sky = self.background().plain_colour();
@@ -178,7 +177,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
                 None
             };
             *pixel = match (hit, sky) {
-                (Some(point), _) => shade(point, axis),
+                (Some(point), _) => shade(point),
                 // A plain sky's colour, which `Background::along` gives whatever the ray.
                 (None, Some(sky)) => sky,
                 (None, None) => self.background_along(camera, towards, s),
