@@ -124,8 +124,13 @@ impl<const N: usize, const L: usize> Scene<N, L> {
                 }
                 to_rgb(self.lit(material, diffuse, object.colour_at(point)))
             };
-            self.matte_loop(camera, plane, walk(0), before, &mut unshadowed);
-            self.matte_loop(camera, plane, walk(shadowed.end), after, &mut unshadowed);
+            // Either may be empty, and is then not set up.
+            if !before.is_empty() {
+                self.matte_loop(camera, plane, walk(0), before, &mut unshadowed);
+            }
+            if !after.is_empty() {
+                self.matte_loop(camera, plane, walk(shadowed.end), after, &mut unshadowed);
+            }
         }
         let mut shadowed_at = |point: Vec3| {
             at.point = point;
@@ -137,13 +142,15 @@ impl<const N: usize, const L: usize> Scene<N, L> {
             }
             to_rgb(self.lit(material, diffuse, object.colour_at(point)))
         };
-        self.matte_loop(
-            camera,
-            plane,
-            walk(shadowed.start),
-            inside,
-            &mut shadowed_at,
-        );
+        if !inside.is_empty() {
+            self.matte_loop(
+                camera,
+                plane,
+                walk(shadowed.start),
+                inside,
+                &mut shadowed_at,
+            );
+        }
     }
 
     /// The walk along a stretch of a [`MatteRun`] that starts at `walk`: each column's hit on

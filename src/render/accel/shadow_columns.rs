@@ -118,7 +118,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
                     .map_or(99, |w| (w & among).count_ones());
             }
         }
-        if pairs > 3 {
+        if pairs > 3 || line.len < 32 {
             return 0..line.len;
         }
         let (mut lo, mut hi) = (line.len, 0);
