@@ -98,8 +98,8 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// The columns of the run `line` on plane `index`, whose normal is `normal`, outside which
     /// no shadow ray of its hits needs a test: for each light `i` whose rays try `sets[i]`
     /// (`None`: none), the columns each sphere it tries may shadow; all of them where a plane
-    /// may shadow the run, the scene's sets do not name the objects, or more than three
-    /// spheres are tried in all.
+    /// may shadow the run, the scene's sets do not name the objects, more than three spheres
+    /// are tried in all, or the run is shorter than 32 columns.
     pub(crate) fn shadowed_columns(
         &self,
         index: usize,
@@ -108,8 +108,9 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         sets: &[Option<u32>; L],
     ) -> Range<usize> {
         // Each sphere costs two lengths and a division a light: past three (several lights
-        // over several spheres, as in the classic scene), the columns they left out measured
-        // fewer than they cost, and the run is taken whole.
+        // over several spheres, as in the classic scene), or on a short run (an animation's
+        // redrawn region), the columns they left out measured fewer than they cost, and the
+        // run is taken whole.
         let mut pairs = 0;
         for (i, set) in sets.iter().enumerate() {
             if let Some(among) = *set {
