@@ -364,7 +364,7 @@ impl Vec3 {
 /// `1/‖v‖` for a vector `v` whose squared length is `square`, as a factor `y` and a shift
 /// (`y · 2^−shift · 2¹⁶`), or `None` for the zero vector: what each of a unit vector's
 /// components is multiplied by ([`unit_part`]).
-#[inline(always)]
+#[inline]
 const fn unit_scale(square: u64) -> Option<(u32, u32)> {
     if square == 0 {
         return None;
@@ -376,7 +376,7 @@ const fn unit_scale(square: u64) -> Option<(u32, u32)> {
 
 /// The unit vector's component along `c` (a component of `v`), from [`unit_scale`]'s
 /// factor: `|c| ≤ ‖v‖` and `y·‖v‖ ≈ 2^(30 + shift − 14)`, so it is at most 2¹⁶ and a bit.
-#[inline(always)]
+#[inline]
 const fn unit_part(c: Fx, y: u32, shift: u32) -> Fx {
     Fx::from_bits(fx::mul_shift_round(c.to_bits(), y as i32, shift) as i32)
 }
