@@ -296,7 +296,7 @@ fn write_range(f: &mut fmt::Formatter<'_>, min: Fx, max: Fx) -> fmt::Result {
     }
 }
 
-/// As `#[derive(Debug)]` writes it, with each Q16.16 bound to five decimals ([`Decimal`]).
+/// As `#[derive(Debug)]` writes it, with each Q16.16 bound written to at most five decimals.
 impl fmt::Debug for Error {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match *self {
@@ -367,8 +367,8 @@ impl fmt::Debug for Error {
 
 /// A Q16.16 value written (by `Display` and `Debug` alike) to five decimals, rounded to
 /// nearest, trailing zeros dropped: as Q16.16 values lie at least 2⁻¹⁶ > 10⁻⁵ apart, no two
-/// write the same. The errors' own formatting: the `fixed` crate's exact decimals are several
-/// kilobytes of code on a microcontroller, which every firmware that writes an error carries.
+/// write the same. The errors' own formatting: the `fixed` crate's formatter is several
+/// kilobytes of code on a microcontroller, which every firmware that writes an error carried.
 struct Decimal(Fx);
 
 impl fmt::Debug for Decimal {

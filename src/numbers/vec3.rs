@@ -344,8 +344,9 @@ impl Vec3 {
         ))
     }
 
-    /// One component of [`Vec3::normalize_with_square`]'s unit vector, `c` (one of `self`'s),
-    /// bit for bit, without the other two: where the unit vector is only dotted with an axis.
+    /// The component along `c` of the unit vector along a vector whose component `c` is and
+    /// whose squared length is `square`: [`Vec3::normalize_with_square`]'s, bit for bit,
+    /// without the other two, where the unit vector is only dotted with an axis.
     #[inline]
     pub(crate) const fn unit_component_with_square(c: Fx, square: u64) -> Option<Fx> {
         match unit_scale(square) {
@@ -452,6 +453,29 @@ impl Neg for Vec3 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_unit_component_alone_is_the_unit_vectors() {
+        let mut rng = crate::xorshift::XorShift(0x0c0a_1e55_0000_0001);
+        for i in 0..200_000u32 {
+            // Every magnitude within the budget, zero components and the zero vector too.
+            let mut next = |bits: u32| ((rng.next() as i64) >> (64 - bits)) as i32 >> (i % 31);
+            let v = Vec3::new(
+                Fx::from_bits(next(31)),
+                Fx::from_bits(if i % 7 == 0 { 0 } else { next(31) }),
+                Fx::from_bits(next(31)),
+            );
+            let square = v.length_squared_wide();
+            let unit = v.normalize_with_square(square);
+            for (c, u) in [
+                (v.x, unit.map(|u| u.x)),
+                (v.y, unit.map(|u| u.y)),
+                (v.z, unit.map(|u| u.z)),
+            ] {
+                assert_eq!(Vec3::unit_component_with_square(c, square), u, "{v:?}");
+            }
+        }
+    }
 
     #[test]
     fn the_split_dot_product_of_a_unit_vector_is_exact() {

@@ -227,7 +227,7 @@ struct Axis {
 
 impl Axis {
     fn of(normal: Vec3) -> Option<Axis> {
-        let one = Fx::ONE.to_bits();
+        let one = Fx::ONE.to_bits().unsigned_abs();
         let c = [normal.x, normal.y, normal.z].map(Fx::to_bits);
         let index = match c {
             [_, 0, 0] => 0,
@@ -236,7 +236,7 @@ impl Axis {
             _ => return None,
         };
         let value = c[index];
-        (value.abs() == one).then_some(Axis {
+        (value.unsigned_abs() == one).then_some(Axis {
             index: index as u8,
             negative: value < 0,
         })

@@ -111,15 +111,15 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         // over several spheres, as in the classic scene), or on a short run (an animation's
         // redrawn region), the columns they left out measured fewer than they cost, and the
         // run is taken whole.
-        let mut pairs = 0;
+        let mut tried = 0;
         for (i, set) in sets.iter().enumerate() {
-            if let Some(among) = *set {
-                pairs += self
-                    .walked(index, i)
-                    .map_or(99, |w| (w & among).count_ones());
-            }
+            let Some(among) = *set else { continue };
+            let Some(walked) = self.walked(index, i) else {
+                return 0..line.len;
+            };
+            tried += (walked & among).count_ones();
         }
-        if pairs > 3 || line.len < 32 {
+        if tried > 3 || line.len < 32 {
             return 0..line.len;
         }
         let (mut lo, mut hi) = (line.len, 0);
