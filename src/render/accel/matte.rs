@@ -95,7 +95,6 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         // others, and every column of any other plane, the light's whole unit vector and the
         // shadow ray.
         let shadowed = match axis {
-            Some(_) if shadow_sets.iter().all(Option::is_none) => 0..0,
             Some(_) => {
                 let line = RunLine {
                     eye,

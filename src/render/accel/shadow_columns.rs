@@ -97,9 +97,10 @@ impl RunLine {
 impl<const N: usize, const L: usize> Scene<N, L> {
     /// The columns of the run `line` on plane `index`, whose normal is `normal`, outside which
     /// no shadow ray of its hits needs a test: for each light `i` whose rays try `sets[i]`
-    /// (`None`: none), the columns each sphere it tries may shadow; all of them where a plane
-    /// may shadow the run, the scene's sets do not name the objects, more than three spheres
-    /// are tried in all, or the run is shorter than 32 columns.
+    /// (`None`: none), the columns each sphere it tries may shadow, and none where no light's
+    /// rays try anything; all of them where a plane may shadow the run, the scene's sets do
+    /// not name the objects, more than three spheres are tried in all, or the run is shorter
+    /// than 32 columns.
     pub(crate) fn shadowed_columns(
         &self,
         index: usize,
@@ -118,6 +119,9 @@ impl<const N: usize, const L: usize> Scene<N, L> {
                 return 0..line.len;
             };
             tried += (walked & among).count_ones();
+        }
+        if tried == 0 {
+            return 0..0;
         }
         if tried > 3 || line.len < 32 {
             return 0..line.len;
