@@ -91,8 +91,8 @@
 //! | chip | [`Viewport::render`], one-row buffer | `picture::<Rgb565, 160>()?.draw` |
 //! | --- | ---: | ---: |
 //! | Cortex-M0 (`thumbv6m-none-eabi`) | 2 808 / 3 448 | 3 304 / 3 944 |
-//! | Cortex-M3 (`thumbv7m-none-eabi`) | 2 484 / 3 060 | 2 988 / 3 564 |
-//! | Cortex-M4F (`thumbv7em-none-eabihf`) | 2 492 / 3 076 | 2 996 / 3 580 |
+//! | Cortex-M3 (`thumbv7m-none-eabi`) | 2 492 / 3 060 | 2 996 / 3 564 |
+//! | Cortex-M4F (`thumbv7em-none-eabihf`) | 2 500 / 3 076 | 3 004 / 3 580 |
 //! | RV32IMC (`riscv32imc-unknown-none-elf`) | 2 016 / 2 800 | 2 512 / 3 296 |
 //!
 //! The classic scene, with mirrors, glass, highlights and three lights' shadows, takes the
