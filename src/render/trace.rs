@@ -334,12 +334,36 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     ) -> Linear {
         let material = &object.material;
         let on_plane = matches!(object.shape, Shape::Plane(_));
-        let (mut diffuse, mut specular) = (Fx::ZERO, Fx::ZERO);
         let at = Surface {
             index,
             point,
             normal,
         };
+        // A matte surface, the most common, sums the lights' diffuse terms alone: apart from
+        // the highlights' loop, whose sums and view it has no use for.
+        if material.specular <= Fx::ZERO {
+            let diffuse_from = |light_index: usize, light: &Light| {
+                let among = self
+                    .shadows()
+                    .then(|| match plane_shadowers.get(light_index) {
+                        Some(&set) if on_plane => set,
+                        _ => !0,
+                    });
+                match self.reaches(light_index, light, &at, among) {
+                    Some((_, cos)) => fx::mul_unit(light.intensity, cos),
+                    None => Fx::ZERO,
+                }
+            };
+            // One light, the common case on a small screen, without a loop to set up.
+            let diffuse = match self.lights() {
+                [only] => diffuse_from(0, only),
+                lights => (lights.iter().enumerate()).fold(Fx::ZERO, |sum, (i, light)| {
+                    sum.saturating_add(diffuse_from(i, light))
+                }),
+            };
+            return self.lit(material, diffuse, object.colour_at(point));
+        }
+        let (mut diffuse, mut specular) = (Fx::ZERO, Fx::ZERO);
         let mut light_up = |light_index: usize, light: &Light| {
             let among = self
                 .shadows()
@@ -351,8 +375,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
                 return;
             };
             diffuse = diffuse.saturating_add(fx::mul_unit(light.intensity, cos));
-            if material.specular > Fx::ZERO
-                && let Some(dir) = view
+            if let Some(dir) = view
                 && let Some(half) = (l - dir).try_normalize()
             {
                 let s = normal.dot(half).max(Fx::ZERO).min(Fx::ONE);
@@ -360,7 +383,6 @@ impl<const N: usize, const L: usize> Scene<N, L> {
                     .saturating_add(fx::mul_fits(light.intensity, powi(s, material.shininess)));
             }
         };
-        // One light, the common case on a small screen, without a loop to set up.
         match self.lights() {
             [only] => light_up(0, only),
             lights => {
@@ -371,7 +393,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         }
         let lit = self.lit(material, diffuse, object.colour_at(point));
         if specular <= Fx::ZERO {
-            return lit; // matte, or no highlight here: nothing to add
+            return lit; // no highlight here: nothing to add
         }
         let highlight = fx::mul(material.specular, specular);
         lit.map(|c| c.saturating_add(highlight))
