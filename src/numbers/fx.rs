@@ -131,7 +131,65 @@ pub(crate) const fn mul_shift_round(a: i32, b: i32, shift: u32) -> i64 {
         };
         ((high + (1 << (shift - 33))) >> (shift - 32)) as i64
     } else {
-        (wide_mul(a, b) + (1 << (shift - 1))) >> shift
+        let product = wide_mul(a, b);
+        if WORD_SHIFTS {
+            shift_round_words(product, shift)
+        } else {
+            (product + (1 << (shift - 1))) >> shift
+        }
+    }
+}
+
+/// `(product + 2^(shift−1)) >> shift`, rounded half up, for `1 ≤ shift ≤ 63` and
+/// `|product| ≤ 2⁶²`, short of `2⁶²` itself shifted by 63 (so that the sum fits): a product of
+/// two `i32`s, or less.
+#[inline]
+#[must_use]
+pub(crate) const fn shift_round(product: i64, shift: u32) -> i64 {
+    debug_assert!(
+        shift >= 1 && shift <= 63,
+        "shift_round: shift outside 1..=63"
+    );
+    debug_assert!(
+        product.unsigned_abs() <= 1 << 62 && !(shift == 63 && product == 1 << 62),
+        "shift_round: the rounded sum does not fit"
+    );
+    if !WORD_SHIFTS {
+        (product + (1 << (shift - 1))) >> shift
+    } else if shift >= 33 {
+        // As in `mul_shift_round`: only the high word matters, |high| ≤ 2³⁰, and so is the
+        // rounding term.
+        let high = (product >> 32) as i32;
+        ((high + (1 << (shift - 33))) >> (shift - 32)) as i64
+    } else {
+        shift_round_words(product, shift)
+    }
+}
+
+/// Chips where a 64-bit shift by a variable amount is a library call (ARMv6-M) or a
+/// branching sequence (RV32): there [`shift_round_words`] shifts by 32-bit words. The Armv7-M
+/// cores shift 64 bits in a few instructions, and measured slower with it.
+const WORD_SHIFTS: bool = cfg!(any(
+    all(target_arch = "arm", not(target_has_atomic = "32")),
+    target_arch = "riscv32"
+));
+
+/// [`shift_round`] for `1 ≤ shift ≤ 32`, in 32-bit words: the rounding term is below 2³², so
+/// it adds to the low word with a carry into the high word, which holds the sum. Compiled
+/// everywhere, so the host tests check it.
+#[inline]
+const fn shift_round_words(product: i64, shift: u32) -> i64 {
+    debug_assert!(
+        shift >= 1 && shift <= 32,
+        "shift_round_words: shift outside 1..=32"
+    );
+    let (low, carry) = (product as u32).overflowing_add(1 << (shift - 1));
+    let high = ((product >> 32) as i32).wrapping_add(carry as i32);
+    if shift == 32 {
+        high as i64
+    } else {
+        let low = (high << (32 - shift)) as u32 | low >> shift;
+        (((high >> shift) as i64) << 32) | low as i64
     }
 }
 
@@ -410,9 +468,35 @@ mod tests {
             let (a, b, shift) = (seed as i32, (seed >> 32) as i32, 1 + i % 63);
             let exact = ((a as i128 * b as i128 + (1i128 << (shift - 1))) >> shift) as i64;
             assert_eq!(mul_shift_round(a, b, shift), exact, "{a} × {b} >> {shift}");
+            let product = a as i64 * b as i64;
+            let exact = (product as i128 + (1i128 << (shift - 1))) >> shift;
+            assert_eq!(
+                shift_round(product, shift) as i128,
+                exact,
+                "{product} >> {shift}"
+            );
+            let words = 1 + i % 32;
+            let exact = (product as i128 + (1i128 << (words - 1))) >> words;
+            assert_eq!(
+                shift_round_words(product, words) as i128,
+                exact,
+                "{product} >> {words}"
+            );
         }
         assert_eq!(bit_length(0), 0);
         assert_eq!(bit_length(u64::MAX), 64);
+        let ends = [i32::MIN, i32::MIN + 1, -65536, -1, 0, 1, 65535, i32::MAX];
+        for (a, b, shift) in (ends.iter().flat_map(|&a| ends.map(|b| (a, b))))
+            .flat_map(|(a, b)| (1..=32).map(move |shift| (a, b, shift)))
+        {
+            let product = a as i64 * b as i64;
+            let exact = (product as i128 + (1i128 << (shift - 1))) >> shift;
+            assert_eq!(
+                shift_round_words(product, shift) as i128,
+                exact,
+                "{a} × {b} >> {shift}"
+            );
+        }
     }
 
     #[test]

@@ -316,5 +316,5 @@ impl Offsets {
 /// `fx::mul_shift_round` gives for the product `w·m`.
 #[inline(always)]
 fn round(product: i64, shift: u32) -> i32 {
-    ((product + (1 << (shift - 1))) >> shift) as i32
+    fx::shift_round(product, shift) as i32
 }
