@@ -25,14 +25,27 @@ pub const fn isqrt(x: u64) -> u64 {
     if x < 2 {
         return x;
     }
-    let mut r = estimate(x);
-    while !square_at_most(r, x) {
-        r -= 1;
+    // The root is below 2³², and so, once clamped there, is the estimate: its square is one
+    // 32 × 32 product, and each whole step moves it by `2r + 1` without another.
+    let estimate = estimate(x);
+    let mut r = if estimate > u32::MAX as u64 {
+        u32::MAX
+    } else {
+        estimate as u32
+    };
+    let mut square = wide_mul_u32(r, r);
+    while square > x {
+        r -= 1; // r² > x ≥ 2: r is at least 2
+        square -= 2 * r as u64 + 1; // (r + 1)² − r²
     }
-    while square_at_most(r + 1, x) {
+    // Below 2³² − 1, (r + 1)² fits 64 bits. Written as the step it is: the `r² + 2r < x`
+    // clippy prefers compiles longer on the Cortex-M0.
+    #[allow(clippy::int_plus_one)]
+    while r < u32::MAX && square + 2 * r as u64 + 1 <= x {
+        square += 2 * r as u64 + 1;
         r += 1;
     }
-    r
+    r as u64
 }
 
 /// `√x` for `x ≥ 2`, to within 4 below 2⁴⁴ and 8 above (the tests find 2 and 3): [`isqrt`]'s
@@ -54,12 +67,6 @@ const fn estimate(x: u64) -> u64 {
 #[inline(never)]
 pub(crate) const fn isqrt_once(x: u64) -> u64 {
     isqrt(x)
-}
-
-/// Whether `r² ≤ x`: `r²` by a 32 × 32 product, and from `r = 2³²` up it exceeds every `u64`.
-#[inline]
-const fn square_at_most(r: u64, x: u64) -> bool {
-    r >> 32 == 0 && wide_mul_u32(r as u32, r as u32) <= x
 }
 
 #[cfg(test)]
