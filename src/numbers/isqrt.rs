@@ -59,7 +59,14 @@ const fn estimate(x: u64) -> u64 {
     // √x = x · (1/√x). With m the top 32 bits of x, x ≈ m · 2^(2·half − 32), so
     // √x ≈ m · y · 2^(half − 62).
     let m = top_word(x, 2 * half);
-    wide_mul_u32(m, y) >> (62 - half)
+    let product = wide_mul_u32(m, y);
+    if half <= 30 {
+        // A shift of 32 or more, of the high word alone: no 64-bit shift by a variable
+        // amount, a library call on the Cortex-M0. Every x below 2⁶⁰ is here.
+        ((product >> 32) as u32 >> (30 - half)) as u64
+    } else {
+        product >> (62 - half)
+    }
 }
 
 /// [`isqrt`], out of line: for the set-up work of a frame or a row (lengths, the balls that
