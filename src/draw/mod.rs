@@ -72,8 +72,8 @@
 //! | --- | --- |
 //! | row buffer, `[Rgb; 320]` | 960 |
 //! | the [`Viewport`] (two references and a point, 32-bit target) | 16 |
-//! | stack below [`Viewport::render`], Cortex-M0, classic scene (the deepest) | 3 448 |
-//! | **total** | **about 4.4 KB** |
+//! | stack below [`Viewport::render`], Cortex-M0, classic scene (the deepest) | 3 536 |
+//! | **total** | **about 4.5 KB** |
 //!
 //! A framebuffer for the same display would take 230 400 bytes. The scene (`Scene<8>`, about
 //! 1 KB with its shadow cones) and camera (56 bytes) are the caller's, wherever it keeps
@@ -90,10 +90,10 @@
 //!
 //! | chip | [`Viewport::render`], one-row buffer | `picture::<Rgb565, 160>()?.draw` |
 //! | --- | ---: | ---: |
-//! | Cortex-M0 (`thumbv6m-none-eabi`) | 2 808 / 3 448 | 3 304 / 3 944 |
-//! | Cortex-M3 (`thumbv7m-none-eabi`) | 2 492 / 3 060 | 2 996 / 3 564 |
-//! | Cortex-M4F (`thumbv7em-none-eabihf`) | 2 500 / 3 076 | 3 004 / 3 580 |
-//! | RV32IMC (`riscv32imc-unknown-none-elf`) | 2 016 / 2 800 | 2 512 / 3 296 |
+//! | Cortex-M0 (`thumbv6m-none-eabi`) | 2 832 / 3 536 | 3 328 / 4 032 |
+//! | Cortex-M3 (`thumbv7m-none-eabi`) | 2 504 / 3 088 | 3 008 / 3 592 |
+//! | Cortex-M4F (`thumbv7em-none-eabihf`) | 2 512 / 3 116 | 3 016 / 3 620 |
+//! | RV32IMC (`riscv32imc-unknown-none-elf`) | 2 000 / 2 832 | 2 496 / 3 328 |
 //!
 //! The classic scene, with mirrors, glass, highlights and three lights' shadows, takes the
 //! deepest path; a picture adds its row buffer (480 bytes at 160 columns) and a few words to
