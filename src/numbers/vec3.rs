@@ -278,6 +278,9 @@ impl Vec3 {
     #[inline]
     #[must_use]
     pub const fn length_squared_wide(self) -> u64 {
+        if fx::NO_LONG_MULTIPLY {
+            return split_length_squared(self);
+        }
         const fn sq(c: Fx) -> u64 {
             // A square of an i32 is at most 2⁶², so the signed 32 × 32 → 64 product holds it.
             fx::wide_mul(c.to_bits(), c.to_bits()) as u64
@@ -382,6 +385,32 @@ const fn unit_part(c: Fx, y: u32, shift: u32) -> Fx {
     Fx::from_bits(fx::mul_shift_round(c.to_bits(), y as i32, shift) as i32)
 }
 
+/// [`Vec3::length_squared_wide`] where a 64-bit product is a long sequence: with each
+/// component `c = h·2¹⁶ + l` (`h` signed, `l` in 0..2¹⁶), `Σ c² = 2³²·Σ h² + 2¹⁷·Σ h·l + Σ l²`,
+/// nine 16-bit products and the three sums gathered once, where three whole squares would each
+/// be assembled in 64 bits. `Σ h² ≤ 3·2³⁰` fits a `u32`. Compiled everywhere, so the host
+/// tests check it.
+#[inline]
+const fn split_length_squared(v: Vec3) -> u64 {
+    let (x, y, z) = (square_parts(v.x), square_parts(v.y), square_parts(v.z));
+    let high = x.0 + y.0 + z.0;
+    let middle = x.1 + y.1 + z.1;
+    let low = x.2 + y.2 + z.2;
+    // The sum is below 2⁶⁴, and the middle term may be negative: summed modulo 2⁶⁴, exactly.
+    ((high as u64) << 32)
+        .wrapping_add((middle << 17) as u64)
+        .wrapping_add(low)
+}
+
+/// `c = h·2¹⁶ + l`'s `h²`, `h·l` and `l²`, each exact in 32 bits (`|h| ≤ 2¹⁵`, `l < 2¹⁶`):
+/// [`split_length_squared`]'s terms.
+#[inline]
+const fn square_parts(c: Fx) -> (u32, i64, u64) {
+    let c = c.to_bits();
+    let (h, l) = (c >> 16, c & 0xFFFF);
+    ((h * h) as u32, (h * l) as i64, (l as u32 * l as u32) as u64)
+}
+
 /// [`Vec3::dot_exact`] of raw values where a 64-bit product is a long sequence: each product
 /// of a unit component in two parts ([`fx::split_by_unit`]), `Σ u·v + 2¹⁵ = 2¹⁶·Σ high +
 /// Σ low + 2¹⁵`, and only the low sum, below 2³⁴, needs 64 bits. The high parts are summed
@@ -453,6 +482,39 @@ impl Neg for Vec3 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn split_squared_lengths_are_the_exact_sums() {
+        let mut rng = crate::xorshift::XorShift(0x94d0_49bb_1331_11eb);
+        let ends = [
+            i32::MIN,
+            i32::MIN + 1,
+            -65537,
+            -65536,
+            -1,
+            0,
+            1,
+            65535,
+            65536,
+            i32::MAX,
+        ];
+        let exact = |v: Vec3| {
+            [v.x, v.y, v.z]
+                .map(|c| (c.to_bits() as i128).pow(2))
+                .iter()
+                .sum::<i128>()
+        };
+        let corners = ends.iter().flat_map(|&x| ends.iter().map(move |&y| (x, y)));
+        let corners = corners.flat_map(|(x, y)| ends.iter().map(move |&z| [x, y, z]));
+        let random = (0..100_000).map(|i| {
+            // Every magnitude, either sign: a signed 64-bit draw shifted arithmetically.
+            [0, 1, 2].map(|_| (rng.next() as i64 >> (32 + i % 32)) as i32)
+        });
+        for [x, y, z] in corners.chain(random) {
+            let v = Vec3::new(Fx::from_bits(x), Fx::from_bits(y), Fx::from_bits(z));
+            assert_eq!(split_length_squared(v) as i128, exact(v), "{x} {y} {z}");
+        }
+    }
 
     #[test]
     fn a_unit_component_alone_is_the_unit_vectors() {
