@@ -326,9 +326,8 @@ pub(crate) const fn mul_fits(a: Fx, b: Fx) -> Fx {
         "mul_fits: factor outside 0..=1"
     );
     let (a, b) = (a.to_bits(), b.to_bits());
-    // The product fits 32 bits, so `split_mul_unit`'s sum modulo 2³² is exact.
     Fx::from_bits(if NO_LONG_MULTIPLY {
-        split_mul_unit(a, b)
+        split_mul_fits(a, b)
     } else {
         ((a as i64 * b as i64 + (1 << (FRAC - 1))) >> FRAC) as i32
     })
@@ -356,6 +355,19 @@ pub(crate) const fn mul_unit(t: Fx, u: Fx) -> Fx {
     } else {
         ((t as i64 * u as i64 + (1 << (FRAC - 1))) >> FRAC) as i32
     })
+}
+
+/// [`mul_fits`] where there is [`NO_LONG_MULTIPLY`]. The product fits 32 bits, so
+/// [`split_mul_unit`]'s sum modulo 2³² is exact; and for `0 ≤ a < 1`, the brightness of a
+/// surface lit by one light, `a · b` and the rounding term stay below 2³² − 2¹⁵: one 32-bit
+/// product. Compiled everywhere, so the host tests check it.
+#[inline]
+const fn split_mul_fits(a: i32, b: i32) -> i32 {
+    if a >= 0 && a < 1 << FRAC {
+        ((a as u32 * b as u32 + (1 << (FRAC - 1))) >> FRAC) as i32
+    } else {
+        split_mul_unit(a, b)
+    }
 }
 
 /// `t · u` in two parts of 32-bit products, for a factor `u` below 2¹⁷ in magnitude: with
@@ -451,6 +463,34 @@ mod tests {
                 let exact = ((a as i64 * b as i64 + (1 << 15)) >> 16) as i32;
                 assert_eq!(split_mul_unit(a, b), exact, "{a} × {b}");
             }
+        }
+    }
+
+    #[test]
+    fn products_by_a_factor_of_at_most_one_split_as_they_round() {
+        let mut rng = crate::xorshift::XorShift(0xd1b5_4a32_d192_ed03);
+        let ends = [
+            i32::MIN,
+            -65537,
+            -65536,
+            -1,
+            0,
+            1,
+            32767,
+            65535,
+            65536,
+            65537,
+            i32::MAX,
+        ];
+        let factors = [0, 1, 32767, 32768, 32769, 65535, 65536];
+        let random = (0..100_000).map(|i| {
+            let a = (rng.next() as i64 >> (32 + i % 32)) as i32;
+            (a, (rng.next() % 65537) as i32)
+        });
+        let pairs = ends.iter().flat_map(|&a| factors.map(|b| (a, b)));
+        for (a, b) in pairs.chain(random) {
+            let exact = ((a as i64 * b as i64 + (1 << 15)) >> 16) as i32;
+            assert_eq!(split_mul_fits(a, b), exact, "{a} × {b}");
         }
     }
 
