@@ -72,7 +72,7 @@
 //! | --- | --- |
 //! | row buffer, `[Rgb; 320]` | 960 |
 //! | the [`Viewport`] (two references and a point, 32-bit target) | 16 |
-//! | stack below [`Viewport::render`], Cortex-M0, classic scene (the deepest) | 3 536 |
+//! | stack below [`Viewport::render`], Cortex-M0, classic scene (the deepest) | 3 532 |
 //! | **total** | **about 4.5 KB** |
 //!
 //! A framebuffer for the same display would take 230 400 bytes. The scene (`Scene<8>`, about
@@ -90,7 +90,7 @@
 //!
 //! | chip | [`Viewport::render`], one-row buffer | `picture::<Rgb565, 160>()?.draw` |
 //! | --- | ---: | ---: |
-//! | Cortex-M0 (`thumbv6m-none-eabi`) | 2 832 / 3 536 | 3 328 / 4 032 |
+//! | Cortex-M0 (`thumbv6m-none-eabi`) | 2 824 / 3 532 | 3 320 / 4 028 |
 //! | Cortex-M3 (`thumbv7m-none-eabi`) | 2 504 / 3 088 | 3 008 / 3 592 |
 //! | Cortex-M4F (`thumbv7em-none-eabihf`) | 2 512 / 3 116 | 3 016 / 3 620 |
 //! | RV32IMC (`riscv32imc-unknown-none-elf`) | 2 000 / 2 832 | 2 496 / 3 328 |
