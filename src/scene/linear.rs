@@ -8,11 +8,11 @@ pub(crate) type Linear = [Fx; 3];
 
 /// A channel of 0..=255 as 0..=1, rounded to nearest.
 ///
-/// `c · 2¹⁶ / 255 = c · 257 + c/255`, and `c/255` rounds to 1 exactly when `c ≥ 128`: no
-/// division.
+/// `c · 2¹⁶ / 255 = c · 257 + c/255`, and `c/255` rounds to 1 exactly when `c ≥ 128`, that is
+/// `c >> 7`: no division, and no comparison.
 #[inline]
 pub(crate) const fn channel_to_linear(c: u8) -> Fx {
-    Fx::from_bits(c as i32 * 257 + (c >= 128) as i32)
+    Fx::from_bits(c as i32 * 257 + (c >> 7) as i32)
 }
 
 /// A summed channel back to 0..=255: times 255, rounded half up, clamped.
