@@ -129,15 +129,17 @@ pub(crate) const fn mul_shift_round(a: i32, b: i32, shift: u32) -> i64 {
         } else {
             (wide_mul(a, b) >> 32) as i32
         };
-        ((high + (1 << (shift - 33))) >> (shift - 32)) as i64
+        shift_round_high(high, shift)
     } else {
-        let product = wide_mul(a, b);
-        if WORD_SHIFTS {
-            shift_round_words(product, shift)
-        } else {
-            (product + (1 << (shift - 1))) >> shift
-        }
+        shift_round(wide_mul(a, b), shift)
     }
+}
+
+/// [`shift_round`] from a shift of 33 up, given the product's high word `high` alone (see
+/// [`mul_shift_round`]): `|high| ≤ 2³⁰`, and so is the rounding term.
+#[inline]
+const fn shift_round_high(high: i32, shift: u32) -> i64 {
+    ((high + (1 << (shift - 33))) >> (shift - 32)) as i64
 }
 
 /// `(product + 2^(shift−1)) >> shift`, rounded half up, for `1 ≤ shift ≤ 63` and
@@ -157,10 +159,7 @@ pub(crate) const fn shift_round(product: i64, shift: u32) -> i64 {
     if !WORD_SHIFTS {
         (product + (1 << (shift - 1))) >> shift
     } else if shift >= 33 {
-        // As in `mul_shift_round`: only the high word matters, |high| ≤ 2³⁰, and so is the
-        // rounding term.
-        let high = (product >> 32) as i32;
-        ((high + (1 << (shift - 33))) >> (shift - 32)) as i64
+        shift_round_high((product >> 32) as i32, shift)
     } else {
         shift_round_words(product, shift)
     }
@@ -466,6 +465,11 @@ mod tests {
         }
     }
 
+    /// `(product + 2^(shift−1)) >> shift` in exact 128-bit arithmetic.
+    fn rounded(product: i64, shift: u32) -> i128 {
+        (product as i128 + (1i128 << (shift - 1))) >> shift
+    }
+
     #[test]
     fn products_by_a_factor_of_at_most_one_split_as_they_round() {
         let mut rng = crate::xorshift::XorShift(0xd1b5_4a32_d192_ed03);
@@ -506,17 +510,20 @@ mod tests {
             let fits = x & (u64::MAX >> (32 - k));
             assert_eq!(shr_to_u32(fits, k), (fits >> k) as u32, "{fits} >> {k}");
             let (a, b, shift) = (seed as i32, (seed >> 32) as i32, 1 + i % 63);
-            let exact = ((a as i128 * b as i128 + (1i128 << (shift - 1))) >> shift) as i64;
-            assert_eq!(mul_shift_round(a, b, shift), exact, "{a} × {b} >> {shift}");
             let product = a as i64 * b as i64;
-            let exact = (product as i128 + (1i128 << (shift - 1))) >> shift;
+            let exact = rounded(product, shift);
+            assert_eq!(
+                mul_shift_round(a, b, shift) as i128,
+                exact,
+                "{a} × {b} >> {shift}"
+            );
             assert_eq!(
                 shift_round(product, shift) as i128,
                 exact,
                 "{product} >> {shift}"
             );
             let words = 1 + i % 32;
-            let exact = (product as i128 + (1i128 << (words - 1))) >> words;
+            let exact = rounded(product, words);
             assert_eq!(
                 shift_round_words(product, words) as i128,
                 exact,
@@ -530,7 +537,7 @@ mod tests {
             .flat_map(|(a, b)| (1..=32).map(move |shift| (a, b, shift)))
         {
             let product = a as i64 * b as i64;
-            let exact = (product as i128 + (1i128 << (shift - 1))) >> shift;
+            let exact = rounded(product, shift);
             assert_eq!(
                 shift_round_words(product, shift) as i128,
                 exact,
