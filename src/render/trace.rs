@@ -343,12 +343,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         // the highlights' loop, whose sums and view it has no use for.
         if material.specular <= Fx::ZERO {
             let diffuse_from = |light_index: usize, light: &Light| {
-                let among = self
-                    .shadows()
-                    .then(|| match plane_shadowers.get(light_index) {
-                        Some(&set) if on_plane => set,
-                        _ => !0,
-                    });
+                let among = self.shadow_set(light_index, on_plane, plane_shadowers);
                 match self.reaches(light_index, light, &at, among) {
                     Some((_, cos)) => fx::mul_unit(light.intensity, cos),
                     None => Fx::ZERO,
@@ -365,12 +360,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         }
         let (mut diffuse, mut specular) = (Fx::ZERO, Fx::ZERO);
         let mut light_up = |light_index: usize, light: &Light| {
-            let among = self
-                .shadows()
-                .then(|| match plane_shadowers.get(light_index) {
-                    Some(&set) if on_plane => set,
-                    _ => !0,
-                });
+            let among = self.shadow_set(light_index, on_plane, plane_shadowers);
             let Some((l, cos)) = self.reaches(light_index, light, &at, among) else {
                 return;
             };
@@ -397,6 +387,22 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         }
         let highlight = fx::mul(material.specular, specular);
         lit.map(|c| c.saturating_add(highlight))
+    }
+
+    /// The objects a shadow ray towards light `light_index` tries from a surface (a plane's
+    /// row set where `on_plane`, every object otherwise), or `None` where shadows are off.
+    #[inline(always)]
+    fn shadow_set(
+        &self,
+        light_index: usize,
+        on_plane: bool,
+        plane_shadowers: &[u32; L],
+    ) -> Option<u32> {
+        self.shadows()
+            .then(|| match plane_shadowers.get(light_index) {
+                Some(&set) if on_plane => set,
+                _ => !0,
+            })
     }
 
     /// The ambient and diffuse light leaving a surface of `material` and `colour` that
