@@ -265,18 +265,25 @@ impl Axis {
 }
 
 /// `s·w` along a row, `w` stepping by `r`: `plane::offset(scale, w)` for each column, carried
-/// as the exact products `w·m` (below 2⁶¹: `w` within the ray budget, `m` below 2³¹), to
-/// which each column adds `r·m`, and rounded as `offset` rounds. A component along which the
-/// row does not move (`r`'s is 0: two of three for a camera looking along an axis) keeps its
-/// rounded value.
+/// without a shift. Each component is the rounded quotient `⌊q / 2^shift⌋` of
+/// `q = w·m + 2^(shift−1)` (the product exact: `w` within the ray budget, `m` below 2³¹, so
+/// below 2⁶¹), held as that quotient and its remainder, the remainder in the top `shift` bits
+/// of a 64-bit word. A column adds the step `r·m` split the same way: the remainders' sum
+/// carries out of the word exactly when it reaches `2^shift`, and the carry goes into the
+/// quotient. The quotients are the offsets, as `offset` rounds them, at every column; a
+/// component along which the row does not move (`r`'s is 0: two of three for a camera
+/// looking along an axis) is left as it is.
 struct Offsets {
-    products: [i64; 3],
-    steps: [i64; 3],
     offset: [i32; 3],
-    shift: u32,
+    remainder: [u64; 3],
+    step_quotient: [i32; 3],
+    step_remainder: [u64; 3],
 }
 
+// Both out of line on RV32, where the 64-bit shifts and carries are long sequences whose
+// copies in each loop its flash does not hold; in line elsewhere.
 impl Offsets {
+    #[cfg_attr(target_arch = "riscv32", inline(never))]
     fn new(scale: Scale, start: Vec3, step: Vec3) -> Self {
         let m = scale.m as i64;
         // Past 63 every offset rounds to 0, and stays there (`offset` says why).
@@ -284,13 +291,16 @@ impl Offsets {
             shift @ 1..64 => (m, shift as u32),
             _ => (0, 1),
         };
+        // A value's quotient by 2^shift (floored) and its remainder, moved to the top.
+        let split = |v: i64| ((v >> shift) as i32, (v as u64) << (64 - shift));
         let p = |c: Fx| c.to_bits() as i64 * m;
-        let products = [p(start.x), p(start.y), p(start.z)];
+        let [x, y, z] = [start.x, start.y, start.z].map(|c| split(p(c) + (1 << (shift - 1))));
+        let [sx, sy, sz] = [step.x, step.y, step.z].map(|c| split(p(c)));
         Offsets {
-            products,
-            steps: [p(step.x), p(step.y), p(step.z)],
-            offset: products.map(|p| round(p, shift)),
-            shift,
+            offset: [x.0, y.0, z.0],
+            remainder: [x.1, y.1, z.1],
+            step_quotient: [sx.0, sy.0, sz.0],
+            step_remainder: [sx.1, sy.1, sz.1],
         }
     }
 
@@ -301,27 +311,77 @@ impl Offsets {
         Vec3::new(x, y, z)
     }
 
-    #[inline]
+    #[cfg_attr(not(target_arch = "riscv32"), inline)]
+    #[cfg_attr(target_arch = "riscv32", inline(never))]
     fn step(&mut self) {
-        let shift = self.shift;
-        let step = |product: &mut i64, step: i64, offset: &mut i32| {
-            if step != 0 {
-                *product = product.wrapping_add(step);
-                *offset = round(*product, shift);
+        let step = |offset: &mut i32, remainder: &mut u64, quotient: i32, part: u64| {
+            if quotient != 0 || part != 0 {
+                let (sum, carry) = remainder.overflowing_add(part);
+                *remainder = sum;
+                *offset = offset.wrapping_add(quotient).wrapping_add(carry as i32);
             }
         };
-        let [px, py, pz] = &mut self.products;
-        let [sx, sy, sz] = self.steps;
         let [ox, oy, oz] = &mut self.offset;
-        step(px, sx, ox);
-        step(py, sy, oy);
-        step(pz, sz, oz);
+        let [rx, ry, rz] = &mut self.remainder;
+        let [qx, qy, qz] = self.step_quotient;
+        let [px, py, pz] = self.step_remainder;
+        step(ox, rx, qx, px);
+        step(oy, ry, qy, py);
+        step(oz, rz, qz, pz);
     }
 }
 
-/// `⌊(product + 2^(shift−1)) / 2^shift⌋`, `shift` in 1..64: [`Offsets`]' rounding, what
-/// `fx::mul_shift_round` gives for the product `w·m`.
-#[inline(always)]
-fn round(product: i64, shift: u32) -> i32 {
-    fx::shift_round(product, shift) as i32
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::xorshift::XorShift;
+
+    /// `w·m` rounded half up by `2^shift`, in exact 128-bit arithmetic: `plane::offset`'s value
+    /// for a component `w`, and 0 past a shift of 63.
+    fn exact(w: i32, m: i32, shift: i32) -> i32 {
+        if !(1..64).contains(&shift) {
+            return 0;
+        }
+        let q = (w as i128 * m as i128 + (1i128 << (shift - 1))) >> shift;
+        q as i32
+    }
+
+    #[test]
+    fn carried_offsets_are_each_columns_rounded_product() {
+        let mut rng = XorShift(0x2545_f491_4f6c_dd1d);
+        // Starts within 2²⁹ and steps within 2²⁰ a component keep 300 columns within 2³⁰,
+        // the ray budget's bound, so every product stays below 2⁶¹ as `Offsets` assumes.
+        let component = |rng: &mut XorShift, bits: u32| match rng.next() % 8 {
+            0 => 0,
+            1 => 1 << bits,
+            2 => -(1 << bits),
+            _ => (rng.next() as i32) >> (32 - bits - 1),
+        };
+        for round in 0..4000 {
+            let shift = round % 68 - 2; // −2 to 65: outside 1..64 too
+            let m = (1 << 29) + (rng.next() % (3 << 29)) as i32; // in [2²⁹, 2³¹)
+            let scale = Scale { m, shift };
+            let start = [0; 3].map(|_| component(&mut rng, 29));
+            let step = [0; 3].map(|_| component(&mut rng, 20));
+            let v = |c: [i32; 3]| {
+                Vec3::new(
+                    Fx::from_bits(c[0]),
+                    Fx::from_bits(c[1]),
+                    Fx::from_bits(c[2]),
+                )
+            };
+            let mut offsets = Offsets::new(scale, v(start), v(step));
+            for column in 0..300 {
+                let w = [0, 1, 2].map(|i| start[i] + column * step[i]);
+                let want = w.map(|c| exact(c, m, shift));
+                let got = offsets.now();
+                assert_eq!(
+                    [got.x, got.y, got.z].map(Fx::to_bits),
+                    want,
+                    "scale {scale:?}, start {start:?}, step {step:?}, column {column}"
+                );
+                offsets.step();
+            }
+        }
+    }
 }
