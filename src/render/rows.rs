@@ -7,7 +7,6 @@ use crate::framebuffer::Framebuffer;
 use crate::geometry::plane::Plane;
 use crate::geometry::ray::Ray;
 use crate::geometry::shape::Shape;
-use crate::numbers::fx::Fx;
 use crate::numbers::vec3::Vec3;
 use crate::render::accel::matte::MatteRun;
 use crate::render::accel::row_rays::RowSquares;
@@ -73,8 +72,8 @@ fn paint<const N: usize, const L: usize>(
     shadowers: &[u32; L],
     sky: Option<Rgb>,
 ) {
-    let light = match cast {
-        Cast::Ray(ray, hit) => scene.radiance_among(ray, hit, shadowers),
+    let pixel = match cast {
+        Cast::Ray(ray, hit) => scene.pixel_among(ray, hit, shadowers),
         Cast::MatteRun(run) => {
             if let Some(pixels) = out.get_mut(cols) {
                 scene.shade_matte_run(camera, run, shadowers, pixels);
@@ -88,8 +87,8 @@ fn paint<const N: usize, const L: usize>(
             return;
         }
     };
-    if let Some(pixel) = out.get_mut(cols.start) {
-        *pixel = crate::scene::linear::rgb_of(light);
+    if let Some(out) = out.get_mut(cols.start) {
+        *out = pixel;
     }
 }
 
@@ -285,13 +284,7 @@ fn matte_plane<const N: usize, const L: usize>(scene: &Scene<N, L>, index: usize
     let object = scene.objects().get(index)?;
     let material = &object.material;
     match object.shape {
-        Shape::Plane(plane)
-            if material.specular == Fx::ZERO
-                && material.reflect == Fx::ZERO
-                && material.refraction.is_none() =>
-        {
-            Some(plane)
-        }
+        Shape::Plane(plane) if material.is_plain_matte() => Some(plane),
         _ => None,
     }
 }

@@ -118,16 +118,38 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// the background, so its time is bounded too.
     #[must_use]
     pub fn shade(&self, ray: &Ray, hit: Option<&SceneHit>) -> Rgb {
-        crate::scene::linear::rgb_of(self.radiance(ray, hit.copied()))
+        self.pixel_among(ray, hit.copied(), &[!0; L])
     }
 
-    /// The light arriving along `ray`, whose first hit is `hit`, in linear units.
-    pub(crate) fn radiance(&self, ray: &Ray, hit: Option<SceneHit>) -> Linear {
-        self.radiance_among(ray, hit, &[!0; L])
+    /// [`Scene::shade`] where a first hit on a plane need only try objects of
+    /// `plane_shadowers[light]` for its shadow rays (see [`Scene::radiance_among`]). A surface
+    /// that shows its own diffuse light alone ([`Material::is_plain_matte`]) is the pixel by
+    /// itself: its channels are formed from its brightness in one product each
+    /// ([`Scene::matte_pixel`]); any other sums its light and its rays' first.
+    pub(crate) fn pixel_among(
+        &self,
+        ray: &Ray,
+        hit: Option<SceneHit>,
+        plane_shadowers: &[u32; L],
+    ) -> Rgb {
+        if let Some(h) = hit
+            && let Some(object) = self.objects().get(h.object)
+            && object.material.is_plain_matte()
+        {
+            let at = Surface {
+                index: h.object,
+                point: h.hit.point,
+                normal: h.hit.normal,
+            };
+            let on_plane = matches!(object.shape, Shape::Plane(_));
+            let diffuse = self.matte_diffuse(&at, on_plane, plane_shadowers);
+            return self.matte_pixel(&object.material, diffuse, object.colour_at(at.point));
+        }
+        crate::scene::linear::rgb_of(self.radiance_among(ray, hit, plane_shadowers))
     }
 
-    /// [`Scene::radiance`] where a first hit on a plane need only try objects of
-    /// `plane_shadowers[light]` (bit `i` for object `i`) for its shadow rays: the same light,
+    /// The light arriving along `ray`, whose first hit is `hit`, in linear units, where a first
+    /// hit on a plane need only try objects of `plane_shadowers[light]` (bit `i` for object `i`) for its shadow rays: the same light,
     /// given sets that hold every object which can shadow the hit (`accel/shadow_rows.rs`).
     pub(crate) fn radiance_among(
         &self,
@@ -342,20 +364,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         // A matte surface, the most common, sums the lights' diffuse terms alone: apart from
         // the highlights' loop, whose sums and view it has no use for.
         if material.specular <= Fx::ZERO {
-            let diffuse_from = |light_index: usize, light: &Light| {
-                let among = self.shadow_set(light_index, on_plane, plane_shadowers);
-                match self.reaches(light_index, light, &at, among) {
-                    Some((_, cos)) => fx::mul_unit(light.intensity, cos),
-                    None => Fx::ZERO,
-                }
-            };
-            // One light, the common case on a small screen, without a loop to set up.
-            let diffuse = match self.lights() {
-                [only] => diffuse_from(0, only),
-                lights => (lights.iter().enumerate()).fold(Fx::ZERO, |sum, (i, light)| {
-                    sum.saturating_add(diffuse_from(i, light))
-                }),
-            };
+            let diffuse = self.matte_diffuse(&at, on_plane, plane_shadowers);
             return self.lit(material, diffuse, object.colour_at(point));
         }
         let (mut diffuse, mut specular) = (Fx::ZERO, Fx::ZERO);
@@ -389,6 +398,26 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         lit.map(|c| c.saturating_add(highlight))
     }
 
+    /// The diffuse light a surface `at` receives (each light's intensity times its cosine,
+    /// summed), from every light whose shadow ray reaches it: all a surface without a
+    /// highlight needs of the lights. `on_plane` and `plane_shadowers` as for `local`.
+    fn matte_diffuse(&self, at: &Surface, on_plane: bool, plane_shadowers: &[u32; L]) -> Fx {
+        let diffuse_from = |light_index: usize, light: &Light| {
+            let among = self.shadow_set(light_index, on_plane, plane_shadowers);
+            match self.reaches(light_index, light, at, among) {
+                Some((_, cos)) => fx::mul_unit(light.intensity, cos),
+                None => Fx::ZERO,
+            }
+        };
+        // One light, the common case on a small screen, without a loop to set up.
+        match self.lights() {
+            [only] => diffuse_from(0, only),
+            lights => (lights.iter().enumerate()).fold(Fx::ZERO, |sum, (i, light)| {
+                sum.saturating_add(diffuse_from(i, light))
+            }),
+        }
+    }
+
     /// The objects a shadow ray towards light `light_index` tries from a surface (a plane's
     /// row set where `on_plane`, every object otherwise), or `None` where shadows are off.
     #[inline(always)]
@@ -409,6 +438,33 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// receives `diffuse` from the lights (each light's intensity times its cosine, summed).
     #[inline(always)]
     pub(crate) fn lit(&self, material: &Material, diffuse: Fx, colour: Rgb) -> Linear {
+        let k = self.brightness(material, diffuse);
+        // A channel is at most 1: its product with k needs no saturation.
+        let lit = |c: u8| fx::mul_fits(k, channel_to_linear(c));
+        [lit(colour.r), lit(colour.g), lit(colour.b)]
+    }
+
+    /// The pixel of a surface of `material` and `colour` that shows [`Scene::lit`]'s light
+    /// alone: each channel `c·k` rounded half up and clamped to 255, for its brightness `k`
+    /// — one rounding of the exact product, as the f64 reference forms it, where the sum of
+    /// several surfaces' light goes through linear units and rounds twice.
+    #[inline(always)]
+    pub(crate) fn matte_pixel(&self, material: &Material, diffuse: Fx, colour: Rgb) -> Rgb {
+        // From 256 up every channel but 0 is 255, so k is held there: c·k then fits 32 bits.
+        // Never negative (the ambient term and the lights' intensities are not), held at 0
+        // all the same.
+        let k = self
+            .brightness(material, diffuse)
+            .to_bits()
+            .clamp(0, 1 << 24) as u32;
+        let channel = |c: u8| ((c as u32 * k + (1 << 15)) >> 16).min(255) as u8;
+        Rgb::new(channel(colour.r), channel(colour.g), channel(colour.b))
+    }
+
+    /// A surface's brightness: the ambient term plus `diffuse`, the light it receives,
+    /// weighted by the material's diffuse weight.
+    #[inline(always)]
+    fn brightness(&self, material: &Material, diffuse: Fx) -> Fx {
         // Several lights and a specular weight up to 16 can exceed Q16.16's range: the sums
         // saturate rather than wrap.
         // A weight of 1, every matte material's, leaves the sum as it is (the product rounds
@@ -418,10 +474,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         } else {
             fx::mul(material.diffuse, diffuse)
         };
-        let k = self.ambient().saturating_add(weighted);
-        // A channel is at most 1: its product with k needs no saturation.
-        let lit = |c: u8| fx::mul_fits(k, channel_to_linear(c));
-        [lit(colour.r), lit(colour.g), lit(colour.b)]
+        self.ambient().saturating_add(weighted)
     }
 
     /// Whether light `light_index` (`light`) reaches the surface `at`: the unit direction `l`

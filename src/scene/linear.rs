@@ -29,21 +29,16 @@ pub(crate) const fn linear_to_channel(x: Fx) -> u8 {
     }
 }
 
-/// An [`Rgb`] from summed channels.
-#[inline]
-pub(crate) const fn to_rgb(c: Linear) -> Rgb {
+/// An [`Rgb`] from summed channels. Out of line: every loop that sums light keeps one copy
+/// between them. (A surface whose light is the pixel by itself skips the sum:
+/// `Scene::matte_pixel`.)
+#[inline(never)]
+pub(crate) fn rgb_of(c: Linear) -> Rgb {
     Rgb::new(
         linear_to_channel(c[0]),
         linear_to_channel(c[1]),
         linear_to_channel(c[2]),
     )
-}
-
-/// [`to_rgb`] out of line: for every loop but the matte runs' (`accel/matte.rs`), which
-/// shade most floor pixels and keep their own copy, each loop would otherwise hold one.
-#[inline(never)]
-pub(crate) fn rgb_of(c: Linear) -> Rgb {
-    to_rgb(c)
 }
 
 /// `base^exponent` for `0 ≤ base ≤ 1`, by repeated squaring in Q1.31.

@@ -83,6 +83,13 @@ impl Material {
         }
     }
 
+    /// Whether a surface of this material shows its own diffuse light alone: no highlight, no
+    /// mirror, no refraction.
+    #[must_use]
+    pub(crate) const fn is_plain_matte(&self) -> bool {
+        self.specular.to_bits() == 0 && self.reflect.to_bits() == 0 && self.refraction.is_none()
+    }
+
     /// A material, checked: `diffuse` 0 to 2, `specular` 0 to 16, `shininess` 1 to 4096,
     /// `reflect` 0 to 1.
     ///

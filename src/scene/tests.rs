@@ -241,3 +241,49 @@ fn secondary_hits_stay_inside_the_budget() {
     assert!(second.hit.point.z < -(crate::numbers::fx::LIMIT + crate::FAR));
     assert_eq!(with.trace(&ray), without.trace(&ray));
 }
+
+#[test]
+fn a_plain_matte_pixel_is_each_channel_times_its_brightness_rounded_once() {
+    // k = ambient + weight · diffuse, each channel c·k rounded half up and held at 255: the
+    // f64 reference's formula, in exact integers here.
+    let mut rng = crate::xorshift::XorShift(0x6a09_e667_f3bc_c909);
+    let diffuse_values: [Fx; 5000] =
+        core::array::from_fn(|_| Fx::from_bits((rng.next() >> 44) as i32));
+    let ends = [
+        0,
+        1,
+        0x7fff,
+        0x8000,
+        0x1_0000,
+        0x1_0001,
+        0xff_ffff,
+        0x100_0000,
+        i32::MAX,
+    ]
+    .map(Fx::from_bits);
+    for ambient in [0.0, 0.25, 1.0] {
+        let light = Light::from_fx(Vec3::from_ints(0, 100, 0), Fx::ONE).unwrap();
+        let scene = Scene::<1>::new(light, ambient, Rgb::BLACK).unwrap();
+        for weight in [0.0, 0.6, 1.0, 2.0] {
+            let material = Material::new(Rgb::new(0, 128, 255), weight, 0.0, 1, 0.0).unwrap();
+            for &diffuse in ends.iter().chain(&diffuse_values) {
+                let k = scene.ambient().saturating_add(if weight == 1.0 {
+                    diffuse
+                } else {
+                    crate::numbers::fx::mul(material.diffuse, diffuse)
+                });
+                let exact = |c: u8| {
+                    let product = c as i64 * k.to_bits() as i64; // exact: below 2⁴⁰
+                    ((product + (1 << 15)) >> 16).clamp(0, 255) as u8
+                };
+                for colour in [Rgb::new(0, 128, 255), Rgb::new(1, 2, 3), Rgb::WHITE] {
+                    assert_eq!(
+                        scene.matte_pixel(&material, diffuse, colour),
+                        Rgb::new(exact(colour.r), exact(colour.g), exact(colour.b)),
+                        "ambient {ambient}, weight {weight}, diffuse {diffuse:?}, {colour:?}"
+                    );
+                }
+            }
+        }
+    }
+}

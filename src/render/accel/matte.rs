@@ -10,8 +10,8 @@
 //! worked out once too: the object and its facing normal, and for each light whether a shadow
 //! ray from the run can meet anything at all (on a row that no shadow can cross, none is
 //! made). Each hit is then lit by the plain path's own functions (`Scene::reaches`, which
-//! takes the light's direction and casts the shadow ray, and `Scene::lit`), so the pixels are
-//! bit for bit [`Scene::trace`]'s.
+//! takes the light's direction and casts the shadow ray, and `Scene::matte_pixel`), so the
+//! pixels are bit for bit [`Scene::trace`]'s.
 //!
 //! Most of a level floor faces along an axis, and most of its columns lie where no sphere's
 //! shadow can fall (`accel/shadow_columns.rs`): there a hit needs no shadow ray, and so not
@@ -29,7 +29,7 @@ use crate::render::trace::Surface;
 use crate::scene::Scene;
 use crate::scene::colour::Rgb;
 use crate::scene::light::Light;
-use crate::scene::linear::{rgb_of, to_rgb};
+use crate::scene::linear::rgb_of;
 
 /// A run of columns whose rays can meet one matte plane only, object `index` (`plane`), whose
 /// numerator for rays from the eye is `num`, on a row whose column step is parallel to the
@@ -128,7 +128,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
                         sum.saturating_add(diffuse_from(light, point))
                     }),
                 };
-                to_rgb(self.lit(material, diffuse, object.colour_at(point)))
+                self.matte_pixel(material, diffuse, object.colour_at(point))
             };
             // Either may be empty, and is then not set up.
             if !before.is_empty() {
@@ -146,7 +146,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
                     diffuse = diffuse.saturating_add(fx::mul_unit(light.intensity, cos));
                 }
             }
-            to_rgb(self.lit(material, diffuse, object.colour_at(point)))
+            self.matte_pixel(material, diffuse, object.colour_at(point))
         };
         if !inside.is_empty() {
             self.matte_loop(
