@@ -72,7 +72,7 @@
 //! | --- | --- |
 //! | row buffer, `[Rgb; 320]` | 960 |
 //! | the [`Viewport`] (two references and a point, 32-bit target) | 16 |
-//! | stack below [`Viewport::render`], Cortex-M0, classic scene (the deepest) | 3 532 |
+//! | stack below [`Viewport::render`], Cortex-M0, classic scene (the deepest) | 3 540 |
 //! | **total** | **about 4.5 KB** |
 //!
 //! A framebuffer for the same display would take 230 400 bytes. The scene (`Scene<8>`, about
@@ -90,10 +90,10 @@
 //!
 //! | chip | [`Viewport::render`], one-row buffer | `picture::<Rgb565, 160>()?.draw` |
 //! | --- | ---: | ---: |
-//! | Cortex-M0 (`thumbv6m-none-eabi`) | 2 824 / 3 532 | 3 320 / 4 028 |
-//! | Cortex-M3 (`thumbv7m-none-eabi`) | 2 504 / 3 088 | 3 008 / 3 592 |
-//! | Cortex-M4F (`thumbv7em-none-eabihf`) | 2 512 / 3 116 | 3 016 / 3 620 |
-//! | RV32IMC (`riscv32imc-unknown-none-elf`) | 2 000 / 2 832 | 2 496 / 3 328 |
+//! | Cortex-M0 (`thumbv6m-none-eabi`) | 2 840 / 3 540 | 3 336 / 4 036 |
+//! | Cortex-M3 (`thumbv7m-none-eabi`) | 2 520 / 3 104 | 3 024 / 3 608 |
+//! | Cortex-M4F (`thumbv7em-none-eabihf`) | 2 536 / 3 132 | 3 040 / 3 636 |
+//! | RV32IMC (`riscv32imc-unknown-none-elf`) | 2 016 / 2 832 | 2 512 / 3 328 |
 //!
 //! The classic scene, with mirrors, glass, highlights and three lights' shadows, takes the
 //! deepest path; a picture adds its row buffer (480 bytes at 160 columns) and a few words to
