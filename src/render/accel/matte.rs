@@ -291,11 +291,10 @@ impl Offsets {
             shift @ 1..64 => (m, shift as u32),
             _ => (0, 1),
         };
-        // A value's quotient by 2^shift (floored) and its remainder, moved to the top.
-        let split = |v: i64| ((v >> shift) as i32, (v as u64) << (64 - shift));
         let p = |c: Fx| c.to_bits() as i64 * m;
-        let [x, y, z] = [start.x, start.y, start.z].map(|c| split(p(c) + (1 << (shift - 1))));
-        let [sx, sy, sz] = [step.x, step.y, step.z].map(|c| split(p(c)));
+        let [x, y, z] =
+            [start.x, start.y, start.z].map(|c| split(p(c) + (1 << (shift - 1)), shift));
+        let [sx, sy, sz] = [step.x, step.y, step.z].map(|c| split(p(c), shift));
         Offsets {
             offset: [x.0, y.0, z.0],
             remainder: [x.1, y.1, z.1],
@@ -329,6 +328,14 @@ impl Offsets {
         step(oy, ry, qy, py);
         step(oz, rz, qz, pz);
     }
+}
+
+/// `v`'s quotient by `2^shift`, floored (its low 32 bits), and its remainder, moved to the top
+/// of a word, for `shift` in 1..64. Out of line on RV32, where its two shifts are long
+/// sequences that six values a stretch can share.
+#[cfg_attr(target_arch = "riscv32", inline(never))]
+fn split(v: i64, shift: u32) -> (i32, u64) {
+    ((v >> shift) as i32, (v as u64) << (64 - shift))
 }
 
 #[cfg(test)]
