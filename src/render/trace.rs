@@ -149,8 +149,9 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     }
 
     /// The light arriving along `ray`, whose first hit is `hit`, in linear units, where a first
-    /// hit on a plane need only try objects of `plane_shadowers[light]` (bit `i` for object `i`) for its shadow rays: the same light,
-    /// given sets that hold every object which can shadow the hit (`accel/shadow_rows.rs`).
+    /// hit on a plane need only try objects of `plane_shadowers[light]` (bit `i` for object
+    /// `i`) for its shadow rays: the same light, given sets that hold every object which can
+    /// shadow the hit (`accel/shadow_rows.rs`).
     pub(crate) fn radiance_among(
         &self,
         ray: &Ray,
