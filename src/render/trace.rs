@@ -447,8 +447,9 @@ impl<const N: usize, const L: usize> Scene<N, L> {
 
     /// The pixel of a surface of `material` and `colour` that shows [`Scene::lit`]'s light
     /// alone: each channel `c·k` rounded half up and clamped to 255, for its brightness `k`
-    /// — one rounding of the exact product, as the f64 reference forms it, where the sum of
-    /// several surfaces' light goes through linear units and rounds twice.
+    /// — one rounding of the exact product, as the f64 reference forms it, where light that is
+    /// summed goes through linear units and rounds three times (`c/255`, the product, and
+    /// back to 0..=255).
     #[inline(always)]
     pub(crate) fn matte_pixel(&self, material: &Material, diffuse: Fx, colour: Rgb) -> Rgb {
         // From 256 up every channel but 0 is 255, so k is held there: c·k then fits 32 bits.
