@@ -452,14 +452,14 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// back to 0..=255).
     #[inline(always)]
     pub(crate) fn matte_pixel(&self, material: &Material, diffuse: Fx, colour: Rgb) -> Rgb {
-        // From 256 up every channel but 0 is 255, so k is held there: c·k then fits 32 bits.
-        // Never negative (the ambient term and the lights' intensities are not), held at 0
-        // all the same.
-        let k = self
-            .brightness(material, diffuse)
-            .to_bits()
-            .clamp(0, 1 << 24) as u32;
-        let channel = |c: u8| ((c as u32 * k + (1 << 15)) >> 16).min(255) as u8;
+        let k = self.brightness(material, diffuse).to_bits();
+        // Up to a brightness of 1, the common case, no channel passes 255 (255·2¹⁶ + 2¹⁵ is
+        // below 256·2¹⁶): nothing to hold. Above it (and below 0, which as a `u32` is above
+        // too), the channels are held out of line.
+        if (k as u32) > 1 << 16 {
+            return bright_pixel(k, colour);
+        }
+        let channel = |c: u8| ((c as u32 * k as u32 + (1 << 15)) >> 16) as u8;
         Rgb::new(channel(colour.r), channel(colour.g), channel(colour.b))
     }
 
@@ -573,6 +573,18 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         let set = self.shadowers().get(light).and_then(|s| s.get(leaving));
         set.copied().filter(|_| self.objects().len() <= 32)
     }
+}
+
+/// [`Scene::matte_pixel`] for a brightness `k` (raw Q16.16) above 1, or below 0, which no
+/// surface has: each channel held at 255. Out of line, and shared: a lit scene's surfaces are
+/// mostly below 1.
+#[cold]
+#[inline(never)]
+fn bright_pixel(k: i32, colour: Rgb) -> Rgb {
+    // From 256 up every channel but 0 is 255, so k is held there: c·k then fits 32 bits.
+    let k = k.clamp(0, 1 << 24) as u32;
+    let channel = |c: u8| ((c as u32 * k + (1 << 15)) >> 16).min(255) as u8;
+    Rgb::new(channel(colour.r), channel(colour.g), channel(colour.b))
 }
 
 /// A point on the surface of object `index`, whose unit normal there is `normal` (facing the
