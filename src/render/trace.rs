@@ -577,8 +577,9 @@ impl<const N: usize, const L: usize> Scene<N, L> {
 
 /// [`Scene::matte_pixel`] for a brightness `k` (raw Q16.16) above 1: each channel held at
 /// 255 (and at 0 for a `k` below 0, which no surface has). Out of line, and shared by the
-/// three places that form matte pixels: a surface lit by one light of intensity up to 1 is
-/// never above 1, and a brighter one pays a call.
+/// three places that form matte pixels: where the ambient term and the lights' intensities
+/// sum to 1 or less (with a diffuse weight of 1), no surface is above 1, and a brighter one
+/// pays a call.
 #[cold]
 #[inline(never)]
 fn bright_pixel(k: i32, colour: Rgb) -> Rgb {
