@@ -459,7 +459,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         if (k as u32) > 1 << 16 {
             return bright_pixel(k, colour);
         }
-        let channel = |c: u8| ((c as u32 * k as u32 + (1 << 15)) >> 16) as u8;
+        let channel = |c: u8| scaled_channel(c, k as u32) as u8;
         Rgb::new(channel(colour.r), channel(colour.g), channel(colour.b))
     }
 
@@ -585,8 +585,15 @@ impl<const N: usize, const L: usize> Scene<N, L> {
 fn bright_pixel(k: i32, colour: Rgb) -> Rgb {
     // From 256 up every channel but 0 is 255, so k is held there: c·k then fits 32 bits.
     let k = k.clamp(0, 1 << 24) as u32;
-    let channel = |c: u8| ((c as u32 * k + (1 << 15)) >> 16).min(255) as u8;
+    let channel = |c: u8| scaled_channel(c, k).min(255) as u8;
     Rgb::new(channel(colour.r), channel(colour.g), channel(colour.b))
+}
+
+/// An 8-bit channel `c` times a brightness `k` (raw Q16.16, at most 2²⁴), rounded half up:
+/// [`Scene::matte_pixel`]'s one product, not yet held at 255.
+#[inline(always)]
+const fn scaled_channel(c: u8, k: u32) -> u32 {
+    (c as u32 * k + (1 << 15)) >> 16
 }
 
 /// A point on the surface of object `index`, whose unit normal there is `normal` (facing the
