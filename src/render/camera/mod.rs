@@ -1,6 +1,8 @@
 //! [`Camera`]: the chapter's pinhole camera and the general look-at camera, and the builders
 //! that set them up.
 
+use core::num::NonZeroU64;
+
 use micromath::F32Ext;
 
 use embedded_graphics::geometry::Size;
@@ -9,7 +11,7 @@ use crate::check::{self, within};
 use crate::error::{CameraProblem, Error, Quantity};
 use crate::geometry::ray::Ray;
 use crate::numbers::fx::{FRAC, Fx};
-use crate::numbers::isqrt::isqrt;
+use crate::numbers::isqrt::{isqrt, isqrt_once};
 use crate::numbers::vec3::Vec3;
 
 mod builder;
@@ -605,32 +607,52 @@ impl Camera {
     /// inclusive range (it may extend past the screen), or `None` when the sphere reaches
     /// within 1/16 of the plane of the eye and no range is certain.
     ///
-    /// With `x` the sphere centre's offset along `right` and `z` its depth along the view, a
-    /// point of the sphere is seen at `x'/z'`, which lies between `(x − r)/(z ∓ r)` and
-    /// `(x + r)/(z ∓ r)` (the denominator chosen by the numerator's sign); column `j` looks
-    /// along `(j + ½ − cols/2)/f`, with `f` the view distance in pixels. Two columns of margin
-    /// cover the rounding.
+    /// Every ray of column `j` lies in the plane through the eye along `down` and
+    /// `forward + a·right`, with `a = j + ½ − cols/2`; the sphere meets that plane where, in
+    /// the frame of `right` and the unit view (its centre at `x` across and `z` ahead), the
+    /// line `x' = (a/f)·z'` passes within `r` of `(x, z)`: between the two tangents from the
+    /// eye to the disc, whose slopes are `(x·z ± r·√k) / (z² − r²)` with `k = x² + z² − r²`
+    /// (`f` the view distance in pixels). So the span is exact but for its margins: the radius
+    /// is widened by 2⁻¹² of the centre's `|x| + |y| + |z|` from the eye, which covers the
+    /// rounding of the frame, of the rays and of the hit tests (each about 2⁻¹⁶ of the
+    /// distance), and by 2⁻⁷ for the sums' own units; one column each side covers the slopes'
+    /// rounding and the half column of `cols/2`.
+    // Out of line: once a row for each sphere near it, and not short.
+    #[inline(never)]
     pub(crate) fn column_span(&self, centre: Vec3, radius: Fx) -> Option<(i16, i16)> {
         let to_centre = centre - self.eye;
         let view = self.forward.try_normalize()?;
+        // In units of 2⁻⁸, each value below 2²¹ and each product of two below 2⁴²: the centre
+        // and the eye lie within ±1024, a ball's radius within 2048. Flooring `x` and `z` moves
+        // the centre by less than √2 units, which the radius, rounded up, grows by 2 to cover.
         let (x, z) = (self.right.dot_once(to_centre), view.dot_once(to_centre));
-        let (near, far) = (z - radius, z + radius);
-        if near < Fx::from_bits(1 << 12) {
+        let (x, z) = (x.to_bits() >> 8, z.to_bits() >> 8);
+        let widened = radius.to_bits() + (to_centre.l1_raw() >> 12) as i32;
+        let r = ((widened + 255) >> 8) + 2;
+        if z - r < 1 << 4 {
             return None;
         }
-        let ratio = |num: Fx, den: Fx| ((num.to_bits() as i64) << 16) / den.to_bits() as i64;
-        let high = ratio(x + radius, if x + radius >= Fx::ZERO { near } else { far });
-        let low = ratio(x - radius, if x - radius >= Fx::ZERO { far } else { near });
-        let distance = self.forward.length().to_bits() as i64;
-        // f · ratio in whole pixels: Q16.16 × Q16.16 / 2³². The ray budget keeps f at most
-        // 16 384 pixels (raw 2³⁰), and |ratio| < 2³²·² (a numerator below 4572, the eye and
-        // the centre being within ±1024, over a denominator of at least 1/16): the product
-        // is below 2⁶³.
-        let column = |r: i64| {
-            let offset = (distance * r) >> 32;
+        let product = |a: i32, b: i32| a as i64 * b as i64;
+        let below = product(z - r, z + r);
+        // √k rounded up, so that the tangents' spread is not understated.
+        let root = isqrt_once((product(x, x) + below) as u64) as i32 + 1;
+        let (middle, spread) = (product(x, z), product(r, root));
+        // The slopes in Q16.16, rounded towards zero: a numerator below 2⁴³, shifted, fits.
+        let below = NonZeroU64::new(below as u64)?;
+        let slope = |num: i64| {
+            let size = ((num.unsigned_abs() << 16) / below) as i64;
+            if num < 0 { -size } else { size }
+        };
+        let (low, high) = (slope(middle - spread), slope(middle + spread));
+        // f · slope in whole pixels (Q16.16 × Q16.16 / 2³²), floored, in two exact parts:
+        // `f` is below 2³¹ and the slope's low word below 2³², its high word below 2³¹.
+        let distance = self.view.to_bits();
+        let column = |s: i64| {
+            let low = (distance as u64 * s as u32 as u64) >> 32;
+            let offset = product(distance, (s >> 32) as i32) + low as i64;
             (offset + self.cols as i64 / 2).clamp(-8, MAX_PIXELS as i64 + 8) as i16
         };
-        Some((column(low) - 2, column(high) + 2))
+        Some((column(low) - 1, column(high) + 1))
     }
 
     /// The ray through sample (`sx`, `sy`) of an `n × n` grid of sub-pixel centres in pixel
