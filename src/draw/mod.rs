@@ -90,10 +90,10 @@
 //!
 //! | chip | [`Viewport::render`], one-row buffer | `picture::<Rgb565, 160>()?.draw` |
 //! | --- | ---: | ---: |
-//! | Cortex-M0 (`thumbv6m-none-eabi`) | 2 848 / 3 540 | 3 344 / 4 036 |
-//! | Cortex-M3 (`thumbv7m-none-eabi`) | 2 520 / 3 104 | 3 024 / 3 608 |
-//! | Cortex-M4F (`thumbv7em-none-eabihf`) | 2 536 / 3 132 | 3 040 / 3 636 |
-//! | RV32IMC (`riscv32imc-unknown-none-elf`) | 2 016 / 2 832 | 2 512 / 3 328 |
+//! | Cortex-M0 (`thumbv6m-none-eabi`) | 2 824 / 3 516 | 3 320 / 4 012 |
+//! | Cortex-M3 (`thumbv7m-none-eabi`) | 2 496 / 3 080 | 3 000 / 3 584 |
+//! | Cortex-M4F (`thumbv7em-none-eabihf`) | 2 512 / 3 108 | 3 016 / 3 612 |
+//! | RV32IMC (`riscv32imc-unknown-none-elf`) | 1 984 / 2 800 | 2 480 / 3 296 |
 //!
 //! The classic scene, with mirrors, glass, highlights and three lights' shadows, takes the
 //! deepest path; a picture adds its row buffer (480 bytes at 160 columns) and a few words to
