@@ -435,7 +435,7 @@ fn odd_cameras() -> [Camera; 2] {
 
 #[test]
 fn a_spheres_columns_hold_every_column_that_meets_it_and_hug_its_tangents() {
-    // Spheres from a hundredth of a unit to 500 across, from the edge of the eye's plane to
+    // Spheres of radius from a hundredth of a unit to 500, from the edge of the eye's plane to
     // far off, seen by cameras of 1° to 179° and up to 1024 columns: every column whose ray
     // meets a sphere lies in its span. Where the span's widening (2⁻¹² of the centre's
     // distance and 2⁻⁷) is under half a column at the tangents, each end lies within 3
