@@ -293,8 +293,15 @@ impl Sphere {
         let shift = FRAC - 1 + self.inv_shift; // (v·2^(31+k)/r) / 2^(15+k) = v·2¹⁶/r
         let scale = |c: Fx| {
             let q = fx::mul_shift_round(c.to_bits(), self.inv_radius, shift);
-            // A point within rounding of the surface gives |q| ≤ 2¹⁶ plus a few units.
-            Fx::from_bits(q.clamp(-(1 << FRAC), 1 << FRAC) as i32)
+            // A point within rounding of the surface gives |q| ≤ 2¹⁶ plus a few units, and a
+            // hit point is within 2¹⁴ raw units of it (up to FAR along a unit direction good
+            // to 2⁻¹⁶), so for any radius of a raw unit or more |q| stays below 2³¹: held at
+            // ±1 as a 32-bit value, which costs less than holding the 64-bit one.
+            debug_assert!(
+                q.unsigned_abs() < 1 << 31,
+                "outward_normal: the point is far from the surface"
+            );
+            Fx::from_bits((q as i32).clamp(-(1 << FRAC), 1 << FRAC))
         };
         let v = x - self.centre;
         Vec3::new(scale(v.x), scale(v.y), scale(v.z))
