@@ -392,18 +392,12 @@ mod tests {
                 if let Some((a, b)) = whole {
                     narrower += (last - first < b - a) as u32;
                 }
-                for col in 0..camera.cols() {
-                    if sphere
-                        .hit_distance(&camera.ray(col.into(), row.into()))
-                        .is_some()
-                    {
-                        hits += 1;
-                        let col = col as i16;
-                        assert!(
-                            (first..=last).contains(&col),
-                            "case {case}, row {row}: column {col} outside {first}..={last}"
-                        );
-                    }
+                for col in camera.columns_meeting(&sphere, row) {
+                    hits += 1;
+                    assert!(
+                        (first..=last).contains(&col),
+                        "case {case}, row {row}: column {col} outside {first}..={last}"
+                    );
                 }
             }
         }

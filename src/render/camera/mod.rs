@@ -655,6 +655,23 @@ impl Camera {
         Some((column(low) - 1, column(high) + 1))
     }
 
+    /// The columns of display row `row` whose rays meet `sphere`, by brute force: what the
+    /// tests hold [`Camera::column_span`]'s spans to.
+    #[cfg(test)]
+    pub(crate) fn columns_meeting<'a>(
+        &'a self,
+        sphere: &'a crate::Sphere,
+        row: u16,
+    ) -> impl Iterator<Item = i16> + 'a {
+        (0..self.cols())
+            .filter(move |&col| {
+                sphere
+                    .hit_distance(&self.ray(col.into(), row.into()))
+                    .is_some()
+            })
+            .map(|col| col as i16)
+    }
+
     /// The ray through sample (`sx`, `sy`) of an `n × n` grid of sub-pixel centres in pixel
     /// (`x`, `y`), for supersampling: sample `(s, t)` sits at
     /// `(x + (2s + 1)/(2n), y + (2t + 1)/(2n))`. `n` is clamped to 1..=16; `n = 1` is

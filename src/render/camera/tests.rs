@@ -470,18 +470,12 @@ fn a_spheres_columns_hold_every_column_that_meets_it_and_hug_its_tangents() {
         };
         spans += 1;
         for row in (0..camera.rows()).step_by(3) {
-            for col in 0..camera.cols() {
-                if sphere
-                    .hit_distance(&camera.ray(col.into(), row.into()))
-                    .is_some()
-                {
-                    hits += 1;
-                    let col = col as i16;
-                    assert!(
-                        (first..=last).contains(&col),
-                        "case {case}, row {row}: column {col} outside {first}..={last}"
-                    );
-                }
+            for col in camera.columns_meeting(&sphere, row) {
+                hits += 1;
+                assert!(
+                    (first..=last).contains(&col),
+                    "case {case}, row {row}: column {col} outside {first}..={last}"
+                );
             }
         }
         // The exact tangents, in the camera's own frame.
