@@ -297,71 +297,64 @@ fn write_range(f: &mut fmt::Formatter<'_>, min: Fx, max: Fx) -> fmt::Result {
 }
 
 /// As `#[derive(Debug)]` writes it, with each Q16.16 bound written to at most five decimals.
+// A variant's name and fields from one table walked by one `debug_struct`, rather than a chain
+// of calls a variant as a derive writes: the same text in a third of the code, which every
+// firmware that reports an error carries.
 impl fmt::Debug for Error {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match *self {
-            Error::NotFinite { quantity } => f
-                .debug_struct("NotFinite")
-                .field("quantity", &quantity)
-                .finish(),
-            Error::OutOfRange { quantity, min, max } => f
-                .debug_struct("OutOfRange")
-                .field("quantity", &quantity)
-                .field("min", &Decimal(min))
-                .field("max", &Decimal(max))
-                .finish(),
-            Error::NonPositiveRadius => f.write_str("NonPositiveRadius"),
-            Error::ZeroVector { quantity } => f
-                .debug_struct("ZeroVector")
-                .field("quantity", &quantity)
-                .finish(),
-            Error::EmptyBounds => f.write_str("EmptyBounds"),
-            Error::CapacityExceeded { capacity } => f
-                .debug_struct("CapacityExceeded")
-                .field("capacity", &capacity)
-                .finish(),
+        type Fields<'a> = &'a [(&'a str, &'a dyn fmt::Debug)];
+        let (name, fields): (&str, Fields<'_>) = match self {
+            Error::NotFinite { quantity } => ("NotFinite", &[("quantity", quantity)]),
+            Error::OutOfRange { quantity, min, max } => (
+                "OutOfRange",
+                &[
+                    ("quantity", quantity),
+                    ("min", &Decimal(*min)),
+                    ("max", &Decimal(*max)),
+                ],
+            ),
+            Error::NonPositiveRadius => ("NonPositiveRadius", &[]),
+            Error::ZeroVector { quantity } => ("ZeroVector", &[("quantity", quantity)]),
+            Error::EmptyBounds => ("EmptyBounds", &[]),
+            Error::CapacityExceeded { capacity } => ("CapacityExceeded", &[("capacity", capacity)]),
             Error::DegenerateCamera(problem) => {
-                f.debug_tuple("DegenerateCamera").field(&problem).finish()
+                return f.debug_tuple("DegenerateCamera").field(problem).finish();
             }
-            Error::FieldOfViewTooNarrow { min_millidegrees } => f
-                .debug_struct("FieldOfViewTooNarrow")
-                .field("min_millidegrees", &min_millidegrees)
-                .finish(),
-            Error::FieldOfViewTooWide { max_millidegrees } => f
-                .debug_struct("FieldOfViewTooWide")
-                .field("max_millidegrees", &max_millidegrees)
-                .finish(),
-            Error::NoSuchObject { index, count } => f
-                .debug_struct("NoSuchObject")
-                .field("index", &index)
-                .field("count", &count)
-                .finish(),
-            Error::NoSuchLight { index, count } => f
-                .debug_struct("NoSuchLight")
-                .field("index", &index)
-                .field("count", &count)
-                .finish(),
-            Error::ColumnOutOfRange { col, cols } => f
-                .debug_struct("ColumnOutOfRange")
-                .field("col", &col)
-                .field("cols", &cols)
-                .finish(),
-            Error::RowOutOfRange { row, rows } => f
-                .debug_struct("RowOutOfRange")
-                .field("row", &row)
-                .field("rows", &rows)
-                .finish(),
-            Error::SizeMismatch { camera, target } => f
-                .debug_struct("SizeMismatch")
-                .field("camera", &camera)
-                .field("target", &target)
-                .finish(),
-            Error::BufferLength { needed, got } => f
-                .debug_struct("BufferLength")
-                .field("needed", &needed)
-                .field("got", &got)
-                .finish(),
+            Error::FieldOfViewTooNarrow { min_millidegrees } => (
+                "FieldOfViewTooNarrow",
+                &[("min_millidegrees", min_millidegrees)],
+            ),
+            Error::FieldOfViewTooWide { max_millidegrees } => (
+                "FieldOfViewTooWide",
+                &[("max_millidegrees", max_millidegrees)],
+            ),
+            Error::NoSuchObject { index, count } => {
+                ("NoSuchObject", &[("index", index), ("count", count)])
+            }
+            Error::NoSuchLight { index, count } => {
+                ("NoSuchLight", &[("index", index), ("count", count)])
+            }
+            Error::ColumnOutOfRange { col, cols } => {
+                ("ColumnOutOfRange", &[("col", col), ("cols", cols)])
+            }
+            Error::RowOutOfRange { row, rows } => {
+                ("RowOutOfRange", &[("row", row), ("rows", rows)])
+            }
+            Error::SizeMismatch { camera, target } => {
+                ("SizeMismatch", &[("camera", camera), ("target", target)])
+            }
+            Error::BufferLength { needed, got } => {
+                ("BufferLength", &[("needed", needed), ("got", got)])
+            }
+        };
+        if fields.is_empty() {
+            return f.write_str(name);
         }
+        let mut out = f.debug_struct(name);
+        for (field, value) in fields {
+            out.field(field, value);
+        }
+        out.finish()
     }
 }
 
@@ -519,6 +512,62 @@ mod tests {
         assert_eq!(
             format!("{sizes:?}"),
             "SizeMismatch { camera: (4, 3), target: (8, 6) }"
+        );
+        // Every other variant, each field under its own name.
+        let quantity = Quantity::SphereRadius;
+        let rest = [
+            (
+                Error::NotFinite { quantity },
+                "NotFinite { quantity: SphereRadius }",
+            ),
+            (Error::NonPositiveRadius, "NonPositiveRadius"),
+            (
+                Error::ZeroVector { quantity },
+                "ZeroVector { quantity: SphereRadius }",
+            ),
+            (
+                Error::CapacityExceeded { capacity: 8 },
+                "CapacityExceeded { capacity: 8 }",
+            ),
+            (
+                Error::FieldOfViewTooNarrow {
+                    min_millidegrees: 17,
+                },
+                "FieldOfViewTooNarrow { min_millidegrees: 17 }",
+            ),
+            (
+                Error::FieldOfViewTooWide {
+                    max_millidegrees: 170_000,
+                },
+                "FieldOfViewTooWide { max_millidegrees: 170000 }",
+            ),
+            (
+                Error::NoSuchObject { index: 3, count: 2 },
+                "NoSuchObject { index: 3, count: 2 }",
+            ),
+            (
+                Error::NoSuchLight { index: 5, count: 1 },
+                "NoSuchLight { index: 5, count: 1 }",
+            ),
+            (
+                Error::ColumnOutOfRange { col: 7, cols: 6 },
+                "ColumnOutOfRange { col: 7, cols: 6 }",
+            ),
+            (
+                Error::BufferLength {
+                    needed: 40,
+                    got: 39,
+                },
+                "BufferLength { needed: 40, got: 39 }",
+            ),
+        ];
+        for (error, text) in rest {
+            assert_eq!(format!("{error:?}"), text);
+        }
+        // The alternate form, as a derive's.
+        assert_eq!(
+            format!("{:#?}", Error::NoSuchLight { index: 5, count: 1 }),
+            "NoSuchLight {\n    index: 5,\n    count: 1,\n}"
         );
     }
 }
