@@ -132,10 +132,17 @@ impl<const N: usize, const L: usize> Scene<N, L> {
             };
             // Either may be empty, and is then not set up.
             if !before.is_empty() {
-                self.matte_loop(camera, plane, walk(0), before, &mut unshadowed);
+                self.matte_loop(camera, plane, walk(0), before, true, &mut unshadowed);
             }
             if !after.is_empty() {
-                self.matte_loop(camera, plane, walk(shadowed.end), after, &mut unshadowed);
+                self.matte_loop(
+                    camera,
+                    plane,
+                    walk(shadowed.end),
+                    after,
+                    true,
+                    &mut unshadowed,
+                );
             }
         }
         let mut shadowed_at = |point: Vec3| {
@@ -154,6 +161,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
                 plane,
                 walk(shadowed.start),
                 inside,
+                false,
                 &mut shadowed_at,
             );
         }
@@ -162,8 +170,11 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// The walk along a stretch of a [`MatteRun`] that starts at `walk`: each column's hit on
     /// `plane`, shaded by `shade`, or the background where the plane is not met. Started at
     /// any column, it meets the same values as a walk from the run's start: the steps are
-    /// exact.
-    // Out of line: one copy for each kind of stretch, however many stretches a run has.
+    /// exact. With `reach_by_ends`, a stretch whose two ends lie within reach takes no reach
+    /// test at its other columns.
+    // Out of line: one copy for each kind of stretch, however many stretches a run has. Only
+    // the stretches without shadow rays, most of a floor, take `reach_by_ends`: the compiler
+    // makes a second loop for it, which the RV32's flash holds once but not twice.
     #[inline(never)]
     fn matte_loop(
         &self,
@@ -171,6 +182,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         plane: &Plane,
         walk: Walk,
         out: &mut [Rgb],
+        reach_by_ends: bool,
         shade: &mut impl FnMut(Vec3) -> Rgb,
     ) {
         let (eye, step) = (camera.eye(), camera.column_step());
@@ -182,9 +194,17 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         } = walk;
         let mut square = RowSquares::new(towards, step);
         let mut offsets = Offsets::new(scale, towards, step);
+        // `‖w‖²` is a convex quadratic along the stretch, exact in integers: within reach at both
+        // ends, it is within reach at every column, which then needs no squares of its own.
+        // Where they are carried by additions anyway (`RowSquares::now`), there is nothing to
+        // spare.
+        let last = towards.plus(step.times(out.len().saturating_sub(1) as i32));
+        let within = reach_by_ends
+            && !fx::NO_LONG_MULTIPLY
+            && square.now(towards) <= reach
+            && last.length_squared_wide() <= reach;
         for pixel in out.iter_mut() {
-            let s = square.now(towards);
-            let hit = if s <= reach {
+            let hit = if within || square.now(towards) <= reach {
                 plane.bounded_at(eye.plus(offsets.now()))
             } else {
                 None
@@ -193,7 +213,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
                 (Some(point), _) => shade(point),
                 // A plain sky's colour, which `Background::along` gives whatever the ray.
                 (None, Some(sky)) => sky,
-                (None, None) => self.background_along(camera, towards, s),
+                (None, None) => self.background_along(camera, towards, square.now(towards)),
             };
             towards = towards.plus(step);
             square.step();
