@@ -379,8 +379,11 @@ impl<const N: usize, const L: usize> Scene<N, L> {
                 && let Some(half) = (l - dir).try_normalize()
             {
                 let s = normal.dot(half).max(Fx::ZERO).min(Fx::ONE);
-                specular = specular
-                    .saturating_add(fx::mul_fits(light.intensity, powi(s, material.shininess)));
+                // Below the material's threshold the power is 0, and so is the highlight.
+                if s.to_bits() >= i32::from(material.highlight_from) {
+                    let power = powi(s, material.shininess);
+                    specular = specular.saturating_add(fx::mul_fits(light.intensity, power));
+                }
             }
         };
         match self.lights() {

@@ -46,12 +46,25 @@ pub(crate) fn rgb_of(c: Linear) -> Rgb {
 /// Squaring doubles a relative error, so a power formed in Q16.16 would be off by up to
 /// `exponent · 2⁻¹⁷` (1 % for the mirror's 1425). Carried at 31 fractional bits in `u64` the
 /// chain's error stays below `exponent · 2⁻³¹`, and the result is rounded once to Q16.16.
+///
+/// Each product rounds half up a product of non-negative values, which grows with either of
+/// them, so the power grows with `base` (never falls): below [`least_lit_base`] it is 0.
 #[must_use]
-pub(crate) fn powi(base: Fx, exponent: u16) -> Fx {
+pub(crate) const fn powi(base: Fx, exponent: u16) -> Fx {
     const ONE: u64 = 1 << 31;
-    let mul = |a: u64, b: u64| (a * b + (1 << 30)) >> 31; // both ≤ 2³¹: the product fits
-    let clamped = base.max(Fx::ZERO).min(Fx::ONE);
-    let (mut result, mut square, mut e) = (ONE, (clamped.to_bits() as u64) << 15, exponent);
+    // Both at most 2³¹: the product fits.
+    const fn mul(a: u64, b: u64) -> u64 {
+        (a * b + (1 << 30)) >> 31
+    }
+    let raw = base.to_bits();
+    let clamped = if raw < 0 {
+        0
+    } else if raw > 1 << 16 {
+        1 << 16
+    } else {
+        raw
+    };
+    let (mut result, mut square, mut e) = (ONE, (clamped as u64) << 15, exponent);
     while e > 0 {
         if e & 1 == 1 {
             result = mul(result, square);
@@ -62,6 +75,35 @@ pub(crate) fn powi(base: Fx, exponent: u16) -> Fx {
         }
     }
     Fx::from_bits(((result + (1 << 14)) >> 15) as i32)
+}
+
+/// The least base, in raw Q16.16 units, whose [`powi`] to `exponent` is not 0: a highlight
+/// whose `n·h` lies below it adds nothing, and needs no power taken. Below 2¹⁶ for every
+/// exponent up to 4096 (`(1 − 2⁻¹⁶)^4096` is about 0.94), so it fits a `u16`.
+///
+/// `powi` grows with its base, so a binary search finds it: seventeen powers, once a
+/// material.
+#[must_use]
+pub(crate) const fn least_lit_base(exponent: u16) -> u16 {
+    // powi(low) is 0, powi(high) is not: 0 to 0 is 1 only for the exponent 0, which no
+    // material has, and 1 to any power is 1.
+    let (mut low, mut high) = (0i32, 1i32 << 16);
+    if exponent == 0 {
+        return 0;
+    }
+    while high - low > 1 {
+        let middle = low + (high - low) / 2;
+        if powi(Fx::from_bits(middle), exponent).to_bits() > 0 {
+            high = middle;
+        } else {
+            low = middle;
+        }
+    }
+    if high > u16::MAX as i32 {
+        u16::MAX
+    } else {
+        high as u16
+    }
 }
 
 #[cfg(test)]
@@ -101,6 +143,32 @@ mod tests {
                 (p - exact).abs() <= 1.0 / 65536.0,
                 "{b}^{n}: {p} vs {exact}"
             );
+        }
+    }
+
+    #[test]
+    fn below_the_least_lit_base_every_power_is_zero_and_from_it_none_is() {
+        // Every base, for exponents across the range: the threshold splits them exactly.
+        for n in [1u16, 2, 3, 7, 10, 50, 125, 1000, 1425, 4096] {
+            let least = least_lit_base(n) as i32;
+            for raw in 0..=1i32 << 16 {
+                let lit = powi(Fx::from_bits(raw), n) > Fx::ZERO;
+                assert_eq!(lit, raw >= least, "{raw} to the {n}: least {least}");
+            }
+        }
+        // Every exponent, at the threshold and one unit below it.
+        for n in 1..=4096u16 {
+            let least = least_lit_base(n) as i32;
+            assert!(powi(Fx::from_bits(least), n) > Fx::ZERO, "{n}");
+            assert_eq!(powi(Fx::from_bits(least - 1), n), Fx::ZERO, "{n}");
+        }
+        // The highlights of the classic scene's materials start near the cosines
+        // 2^(−17/n) suggests.
+        assert_eq!(least_lit_base(1), 1);
+        let cosine = |n: u16| least_lit_base(n) as f64 / 65536.0;
+        for n in [10u16, 50, 125, 1425] {
+            let estimate = 2f64.powf(-17.0 / f64::from(n));
+            assert!((cosine(n) - estimate).abs() < 0.01, "{n}: {}", cosine(n));
         }
     }
 }

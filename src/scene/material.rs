@@ -4,6 +4,7 @@ use crate::check;
 use crate::error::{Error, Quantity};
 use crate::numbers::fx::Fx;
 use crate::scene::colour::Rgb;
+use crate::scene::linear::least_lit_base;
 
 /// The largest shininess [`Material::new`] accepts.
 const MAX_SHININESS: u16 = 4096;
@@ -29,6 +30,9 @@ pub struct Material {
     pub(crate) diffuse: Fx,
     pub(crate) specular: Fx,
     pub(crate) shininess: u16,
+    /// The least `n·h`, in raw Q16.16 units, whose highlight is not 0 at this shininess
+    /// (`linear::least_lit_base`): below it a highlight takes no power.
+    pub(crate) highlight_from: u16,
     pub(crate) reflect: Fx,
     pub(crate) refraction: Option<Refraction>,
     pub(crate) checker: Option<Checker>,
@@ -77,6 +81,7 @@ impl Material {
             diffuse: Fx::ONE,
             specular: Fx::ZERO,
             shininess: 1,
+            highlight_from: least_lit_base(1),
             reflect: Fx::ZERO,
             refraction: None,
             checker: None,
@@ -156,6 +161,7 @@ impl Material {
             diffuse,
             specular,
             shininess,
+            highlight_from: least_lit_base(shininess),
             reflect,
             refraction: None,
             checker: None,
