@@ -9,6 +9,7 @@
 pub(crate) mod accel;
 pub(crate) mod camera;
 pub(crate) mod changes;
+pub(crate) mod highlight;
 pub(crate) mod pick;
 pub(crate) mod rows;
 pub(crate) mod trace;

@@ -11,6 +11,7 @@ use crate::geometry::ray::Ray;
 use crate::geometry::refract::{refract, schlick};
 use crate::numbers::fx::{self, Fx};
 use crate::numbers::vec3::Vec3;
+use crate::render::highlight::highlight_below;
 use crate::scene::cone::ShadowCone;
 use crate::scene::hit::SceneHit;
 use crate::scene::light::Light;
@@ -375,9 +376,14 @@ impl<const N: usize, const L: usize> Scene<N, L> {
                 return;
             };
             diffuse = diffuse.saturating_add(fx::mul_unit(light.intensity, cos));
-            if let Some(dir) = view
-                && let Some(half) = (l - dir).try_normalize()
-            {
+            if let Some(dir) = view {
+                let v = l - dir;
+                if highlight_below(normal, v, v.length_squared_wide(), material.highlight_from) {
+                    return;
+                }
+                let Some(half) = v.try_normalize() else {
+                    return;
+                };
                 let s = normal.dot(half).max(Fx::ZERO).min(Fx::ONE);
                 // Below the material's threshold the power is 0, and so is the highlight.
                 if s.to_bits() >= i32::from(material.highlight_from) {
