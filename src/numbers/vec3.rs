@@ -119,8 +119,10 @@ impl Vec3 {
     #[cold]
     #[inline(never)]
     const fn dot_wide_saturated(self, o: Vec3) -> i64 {
+        // Each product is exact at 64 bits: only the sum needs 128, and its additions are
+        // far shorter than 128-bit products where a word is 32 bits.
         const fn p(a: Fx, b: Fx) -> i128 {
-            a.to_bits() as i128 * b.to_bits() as i128
+            fx::wide_mul(a.to_bits(), b.to_bits()) as i128
         }
         let sum = p(self.x, o.x) + p(self.y, o.y) + p(self.z, o.z);
         if sum > i64::MAX as i128 {
