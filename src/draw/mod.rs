@@ -90,10 +90,10 @@
 //!
 //! | chip | [`Viewport::render`], one-row buffer | `picture::<Rgb565, 160>()?.draw` |
 //! | --- | ---: | ---: |
-//! | Cortex-M0 (`thumbv6m-none-eabi`) | 2 824 / 3 516 | 3 320 / 4 012 |
-//! | Cortex-M3 (`thumbv7m-none-eabi`) | 2 472 / 3 056 | 2 976 / 3 560 |
-//! | Cortex-M4F (`thumbv7em-none-eabihf`) | 2 512 / 3 100 | 3 016 / 3 604 |
-//! | RV32IMC (`riscv32imc-unknown-none-elf`) | 1 984 / 2 800 | 2 480 / 3 296 |
+//! | Cortex-M0 (`thumbv6m-none-eabi`) | 2 824 / 3 564 | 3 320 / 4 060 |
+//! | Cortex-M3 (`thumbv7m-none-eabi`) | 2 472 / 3 072 | 2 976 / 3 576 |
+//! | Cortex-M4F (`thumbv7em-none-eabihf`) | 2 512 / 3 116 | 3 016 / 3 620 |
+//! | RV32IMC (`riscv32imc-unknown-none-elf`) | 1 984 / 2 816 | 2 480 / 3 312 |
 //!
 //! The classic scene, with mirrors, glass, highlights and three lights' shadows, takes the
 //! deepest path; a picture adds its row buffer (480 bytes at 160 columns) and a few words to
