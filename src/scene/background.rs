@@ -46,7 +46,9 @@ impl Background {
         let s = (dir.y.clamp(-MOST, MOST) + Fx::ONE) >> 1;
         let mix = |b: u8, t: u8| {
             let (b, t) = (channel_to_linear(b), channel_to_linear(t));
-            b + crate::numbers::fx::mul(t - b, s)
+            // `t − b` within ±1 and `s` within −2⁻¹⁶..=1: the product needs no saturation
+            // check, within `mul_unit`'s bounds (below 2¹⁴ times below 2).
+            b + crate::numbers::fx::mul_unit(t - b, s)
         };
         [
             mix(self.bottom.r, self.top.r),
@@ -59,5 +61,47 @@ impl Background {
 impl From<Rgb> for Background {
     fn from(colour: Rgb) -> Self {
         Background::plain(colour)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::numbers::fx;
+
+    #[test]
+    fn a_gradient_blends_as_the_saturating_product_would() {
+        // Every blend factor a direction can give, for the widest spans of a channel and a
+        // few between: the product without its saturation check is the same.
+        let ends = [
+            (0u8, 255u8),
+            (255, 0),
+            (0, 0),
+            (17, 200),
+            (200, 17),
+            (128, 127),
+        ];
+        for (bottom, top) in ends {
+            let (b, t) = (channel_to_linear(bottom), channel_to_linear(top));
+            for raw in -1..=1 << 16 {
+                let s = Fx::from_bits(raw);
+                assert_eq!(
+                    fx::mul_unit(t - b, s),
+                    fx::mul(t - b, s),
+                    "{bottom} {top} {raw}"
+                );
+            }
+        }
+        // The ends of the factor's range, from directions straight down and up, and longer:
+        // the longest straight down blends a unit below black, which a pixel holds at 0.
+        let sky = Background {
+            top: Rgb::new(255, 255, 255),
+            bottom: Rgb::new(0, 0, 0),
+        };
+        let most = Fx::from_bits((1 << 16) + 1);
+        for (y, want) in [(-most, -1), (Fx::ZERO, 1 << 15), (most, 1 << 16)] {
+            let dir = Vec3::new(Fx::ZERO, y, Fx::ZERO);
+            assert_eq!(sky.along(dir), [Fx::from_bits(want); 3], "{y:?}");
+        }
     }
 }
