@@ -377,7 +377,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
             };
             diffuse = diffuse.saturating_add(fx::mul_unit(light.intensity, cos));
             if let Some(dir) = view {
-                let v = l - dir;
+                let v = l.minus(dir); // two unit vectors: no saturation to check
                 if highlight_below(normal, v, v.length_squared_wide(), material.highlight_from) {
                     return;
                 }
