@@ -303,7 +303,9 @@ impl Sphere {
             );
             Fx::from_bits((q as i32).clamp(-(1 << FRAC), 1 << FRAC))
         };
-        let v = x - self.centre;
+        // A point near the surface lies within the radius and a little of the centre: no
+        // saturation to check.
+        let v = x.minus(self.centre);
         Vec3::new(scale(v.x), scale(v.y), scale(v.z))
     }
 }
