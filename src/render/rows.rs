@@ -44,28 +44,29 @@ pub fn render_row<const N: usize, const L: usize>(
     out: &mut [Rgb],
 ) -> Result<(), Error> {
     let row = check_row(camera, y, out)?;
-    // Where nothing can be hit a plain sky needs no rays: `shade` would give its colour.
+    // Where nothing can be hit the sky needs no rays: a plain one is its colour, a gradient
+    // reads one component of each ray's direction.
     let sky = scene.background().plain_colour();
     cast_row(
         scene,
         camera,
         row,
         0..camera.cols(),
-        sky.is_some(),
+        true,
         true,
         |first, end, cast, shadowers| {
             let cols = first as usize..end as usize;
-            paint((scene, camera), out, cols, cast, shadowers, sky)
+            paint((scene, camera, row, first), out, cols, cast, shadowers, sky)
         },
     );
     Ok(())
 }
 
-/// Paints what [`cast_row`] hands over for columns `cols` into `out` (indexed from there): a
-/// shaded pixel, a matte run, or a run of plain sky.
+/// Paints what [`cast_row`] hands over for `out[cols]`, display columns from `first` of display
+/// row `row`: a shaded pixel, a matte run, or a run of sky (`sky`, where it is plain).
 #[inline(always)]
 fn paint<const N: usize, const L: usize>(
-    (scene, camera): (&Scene<N, L>, &Camera),
+    (scene, camera, row, first): (&Scene<N, L>, &Camera, u16, u16),
     out: &mut [Rgb],
     cols: Range<usize>,
     cast: Cast<'_>,
@@ -81,8 +82,11 @@ fn paint<const N: usize, const L: usize>(
             return;
         }
         Cast::Empty => {
-            if let (Some(run), Some(sky)) = (out.get_mut(cols), sky) {
-                run.fill(sky);
+            if let Some(run) = out.get_mut(cols) {
+                match sky {
+                    Some(sky) => run.fill(sky),
+                    None => scene.paint_sky(camera, row, first, run),
+                }
             }
             return;
         }
@@ -103,7 +107,7 @@ pub(crate) fn render_columns<const N: usize, const L: usize>(
     cols: Range<u16>,
     out: &mut [Rgb],
 ) {
-    // Where nothing can be hit a plain sky needs no rays: `shade` would give its colour.
+    // Where nothing can be hit the sky needs no rays (as in `render_row`).
     let sky = scene.background().plain_colour();
     let offset = cols.start;
     cast_row(
@@ -111,11 +115,11 @@ pub(crate) fn render_columns<const N: usize, const L: usize>(
         camera,
         row,
         cols,
-        sky.is_some(),
+        true,
         true,
         |first, end, cast, shadowers| {
-            let (first, end) = ((first - offset) as usize, (end - offset) as usize);
-            paint((scene, camera), out, first..end, cast, shadowers, sky);
+            let cols = (first - offset) as usize..(end - offset) as usize;
+            paint((scene, camera, row, first), out, cols, cast, shadowers, sky);
         },
     );
 }
@@ -225,8 +229,9 @@ pub(crate) enum Cast<'a> {
 /// `cols` are cast.
 ///
 /// With `skip_empty`, a run in which no object can be hit is handed over whole and without
-/// rays, as `each(first, end, Cast::Empty, shadowers)`: `render_row` paints a plain sky so,
-/// which needs no ray. With `matte`, a run that can meet one matte plane only, on a row
+/// rays, as `each(first, end, Cast::Empty, shadowers)`: `render_row` paints the sky so, which
+/// needs no ray (a plain one is its colour, a gradient reads one component of each
+/// direction: `Scene::paint_sky`). With `matte`, a run that can meet one matte plane only, on a row
 /// parallel to it, is handed over whole as [`Cast::MatteRun`], without rays: the point where
 /// a ray meets a plane needs only the direction towards the pixel, not the unit one
 /// (`Plane::intersect`), and shading a matte surface needs neither

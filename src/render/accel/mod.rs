@@ -7,6 +7,8 @@
 //! - `shadow_columns`: the columns of a run on a plane that a sphere can shadow;
 //! - `matte`: a run that can meet one matte plane only, on a row parallel to it, found by
 //!   additions and shaded in one loop, without rays;
+//! - `sky`: a run that can meet nothing, under a gradient sky, from one component of each
+//!   ray's direction, without rays;
 //!
 //! The shadow rays' speed-ups, each light's cone around each sphere and the set of objects that
 //! can shadow each object from each light, are caches the scene keeps up to date as objects
@@ -18,3 +20,4 @@ pub(crate) mod row_rays;
 pub(crate) mod runs;
 pub(crate) mod shadow_columns;
 pub(crate) mod shadow_rows;
+pub(crate) mod sky;

@@ -1,0 +1,36 @@
+//! [`Scene::paint_sky`]: a run of columns that can meet nothing, under a gradient sky.
+//!
+//! A gradient reads one component of a ray's direction, its height (`Background::along`). A
+//! run that can meet nothing gets a ray a column only to have that read, so here each
+//! column takes the component alone, as the unit vector's normalisation forms it
+//! (`Vec3::unit_component_with_square`, bit for bit), from the direction towards its pixel,
+//! stepped along the row as the rays' walk steps it: the pixels are [`Scene::trace`]'s. (A
+//! plain sky needs not even that: `render_row` fills its runs.)
+
+use crate::numbers::fx::Fx;
+use crate::numbers::vec3::Vec3;
+use crate::render::accel::row_rays::RowSquares;
+use crate::render::camera::Camera;
+use crate::scene::Scene;
+use crate::scene::colour::Rgb;
+use crate::scene::linear::rgb_of;
+
+impl<const N: usize, const L: usize> Scene<N, L> {
+    /// The background's pixels for a run of columns of display row `row` that can meet
+    /// nothing, from column `first`, one for each pixel of `out`.
+    // Out of line: the loop of every run of sky under a gradient.
+    #[inline(never)]
+    pub(crate) fn paint_sky(&self, camera: &Camera, row: u16, first: u16, out: &mut [Rgb]) {
+        let step = camera.column_step();
+        // As `Runs::towards` starts a run's walk.
+        let mut towards = camera.row_start(row) + step.times(first.into());
+        let mut square = RowSquares::new(towards, step);
+        for pixel in out.iter_mut() {
+            // A zero direction makes the zero ray (`Camera::ray_along`), whose height is 0.
+            let height = Vec3::unit_component_with_square(towards.y, square.now(towards));
+            *pixel = rgb_of(self.background().along_height(height.unwrap_or(Fx::ZERO)));
+            towards = towards.plus(step);
+            square.step();
+        }
+    }
+}
