@@ -231,9 +231,9 @@ pub(crate) enum Cast<'a> {
 /// With `skip_empty`, a run in which no object can be hit is handed over whole and without
 /// rays, as `each(first, end, Cast::Empty, shadowers)`: `render_row` paints the sky so, which
 /// needs no ray (a plain one is its colour, a gradient reads one component of each
-/// direction: `Scene::paint_sky`). With `matte`, a run that can meet one matte plane only, on a row
-/// parallel to it, is handed over whole as [`Cast::MatteRun`], without rays: the point where
-/// a ray meets a plane needs only the direction towards the pixel, not the unit one
+/// direction: `Scene::paint_sky`). With `matte`, a run that can meet one matte plane only, on
+/// a row parallel to it, is handed over whole as [`Cast::MatteRun`], without rays: the point
+/// where a ray meets a plane needs only the direction towards the pixel, not the unit one
 /// (`Plane::intersect`), and shading a matte surface needs neither
 /// ([`Scene::shade_matte_run`]).
 fn cast_row<const N: usize, const L: usize>(
