@@ -11,18 +11,18 @@ use crate::numbers::fx;
 use crate::numbers::vec3::Vec3;
 
 /// Whether the highlight's cosine `n·h`, for `h` the unit vector along `v` (a light's unit
-/// direction less the view's, of squared length `square` in Q32.32), must come out below
+/// direction less the view's), must come out below
 /// `from` (raw Q16.16, the material's least lit cosine) as `Scene::local` forms it: then the
 /// highlight is 0 and `h` need not be formed. Exact where it says so, conservative elsewhere.
 ///
 /// `h`'s components lie within 0.6 of a unit (2⁻¹⁶) of `v`'s over `‖v‖`
 /// (`Vec3::normalize_with_square`), so for a normal of length at most 1 + 2⁻¹⁵ the dot product
 /// before its rounding lies within 1.04 units of `N/√S`, with `N = n·v` exact in raw units
-/// and `S = square`, and rounded within 1.54: below `from` wherever `N < (from − 2)·√S`. That
+/// and `S = ‖v‖²` in Q32.32, and rounded within 1.54: below `from` wherever `N < (from − 2)·√S`. That
 /// is `N ≤ 0`, or `N² < (from − 2)²·S`, compared with `N` divided by 4 (rounded up) and `S` by
 /// 16 (down) so that both sides are 32 × 32-bit products below 2⁶².
 #[inline]
-pub(crate) fn highlight_below(normal: Vec3, v: Vec3, square: u64, from: u16) -> bool {
+pub(crate) fn highlight_below(normal: Vec3, v: Vec3, from: u16) -> bool {
     let t = i32::from(from) - 2;
     if t <= 0 {
         return false;
@@ -31,9 +31,9 @@ pub(crate) fn highlight_below(normal: Vec3, v: Vec3, square: u64, from: u16) -> 
     if n <= 0 {
         return true;
     }
-    // A light's and a view's unit vectors keep `n` within 2³³ and `square` within 2³⁴ (and a
+    // A light's and a view's unit vectors keep `n` within 2³³ and `‖v‖²` within 2³⁴ (and a
     // little); anything larger is not ruled out.
-    let (quarter, sixteenth) = ((n + 3) >> 2, square >> 4);
+    let (quarter, sixteenth) = ((n + 3) >> 2, v.length_squared_wide() >> 4);
     if quarter > u32::MAX as i64 || sixteenth > u32::MAX as u64 {
         return false;
     }
@@ -67,10 +67,6 @@ mod tests {
             .map_or(0, |h| normal.dot(h).max(Fx::ZERO).min(Fx::ONE).to_bits())
     }
 
-    fn below(normal: Vec3, v: Vec3, from: u16) -> bool {
-        highlight_below(normal, v, v.length_squared_wide(), from)
-    }
-
     #[test]
     fn a_highlight_said_to_be_below_its_threshold_is() {
         let mut rng = XorShift(0x51ed_2701_a3b4_c5d6);
@@ -85,12 +81,12 @@ mod tests {
             let v = l - dir;
             let from = thresholds[round % thresholds.len()];
             let s = cosine(normal, v);
-            if below(normal, v, from) {
+            if highlight_below(normal, v, from) {
                 assert!(s < i32::from(from), "{normal:?} {v:?}: {s} against {from}");
             }
             if s + 8 < i32::from(from) && v.length_squared_wide() > 1 << 28 {
                 well_below += 1;
-                caught += u32::from(below(normal, v, from));
+                caught += u32::from(highlight_below(normal, v, from));
             }
         }
         // Tight as well as safe: every highlight 8 units and more below its threshold is
@@ -153,7 +149,7 @@ mod tests {
                 };
                 let v = l - dir;
                 let s = cosine(normal, v);
-                if below(normal, v, from) {
+                if highlight_below(normal, v, from) {
                     assert!(s < i32::from(from), "{normal:?} {v:?}: {s} against {from}");
                 }
                 near += usize::from((s - i32::from(from)).abs() <= 2);

@@ -378,9 +378,11 @@ impl<const N: usize, const L: usize> Scene<N, L> {
             diffuse = diffuse.saturating_add(fx::mul_unit(light.intensity, cos));
             if let Some(dir) = view {
                 let v = l.minus(dir); // two unit vectors: no saturation to check
-                if highlight_below(normal, v, v.length_squared_wide(), material.highlight_from) {
+                if highlight_below(normal, v, material.highlight_from) {
                     return;
                 }
+                // `v`'s squared length is taken again here rather than handed over from the
+                // test: handed over, the M0's copy of the normalisation measured longer.
                 let Some(half) = v.try_normalize() else {
                     return;
                 };
