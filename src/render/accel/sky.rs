@@ -22,8 +22,8 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     #[inline(never)]
     pub(crate) fn paint_sky(&self, camera: &Camera, row: u16, first: u16, out: &mut [Rgb]) {
         let step = camera.column_step();
-        // As `Runs::towards` starts a run's walk.
-        let mut towards = camera.row_start(row) + step.times(first.into());
+        // Where a run's walk along the row starts (`Camera::row_start`).
+        let mut towards = camera.towards(first.into(), row.into());
         let mut square = RowSquares::new(towards, step);
         for pixel in out.iter_mut() {
             // A zero direction makes the zero ray (`Camera::ray_along`), whose height is 0.

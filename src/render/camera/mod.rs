@@ -462,7 +462,7 @@ impl Camera {
     }
 
     /// From the eye towards the centre of pixel (`x`, `y`), in pixel units, unnormalised.
-    fn towards(&self, x: u32, y: u32) -> Vec3 {
+    pub(crate) fn towards(&self, x: u32, y: u32) -> Vec3 {
         self.towards_sample(x, y, 0, 0, 1)
     }
 
