@@ -90,7 +90,7 @@
 //!
 //! | chip | [`Viewport::render`], one-row buffer | `picture::<Rgb565, 160>()?.draw` |
 //! | --- | ---: | ---: |
-//! | Cortex-M0 (`thumbv6m-none-eabi`) | 2 824 / 3 564 | 3 320 / 4 060 |
+//! | Cortex-M0 (`thumbv6m-none-eabi`) | 2 824 / 3 556 | 3 320 / 4 052 |
 //! | Cortex-M3 (`thumbv7m-none-eabi`) | 2 480 / 3 080 | 2 984 / 3 584 |
 //! | Cortex-M4F (`thumbv7em-none-eabihf`) | 2 520 / 3 124 | 3 024 / 3 628 |
 //! | RV32IMC (`riscv32imc-unknown-none-elf`) | 2 000 / 2 832 | 2 496 / 3 328 |
