@@ -203,7 +203,8 @@ impl<const N: usize, const L: usize> Scene<N, L> {
             && !fx::NO_LONG_MULTIPLY
             && square.now(towards) <= reach
             && last.length_squared_wide() <= reach;
-        for pixel in out.iter_mut() {
+        let start = towards;
+        for (k, pixel) in out.iter_mut().enumerate() {
             let hit = if within || square.now(towards) <= reach {
                 plane.bounded_at(eye.plus(offsets.now()))
             } else {
@@ -213,7 +214,12 @@ impl<const N: usize, const L: usize> Scene<N, L> {
                 (Some(point), _) => shade(point),
                 // A plain sky's colour, which `Background::along` gives whatever the ray.
                 (None, Some(sky)) => sky,
-                (None, None) => self.background_along(camera, towards, square.now(towards)),
+                // Where the squares are carried (`RowSquares::now`), the direction is needed
+                // nowhere else: found from the stretch's start here, it is not carried at all.
+                (None, None) if fx::NO_LONG_MULTIPLY => {
+                    self.background_along(camera, start, k, square.now(towards))
+                }
+                (None, None) => self.background_along(camera, towards, 0, square.now(towards)),
             };
             towards = towards.plus(step);
             square.step();
@@ -221,11 +227,24 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         }
     }
 
-    /// What the camera's ray along `towards`, whose squared length is `square`, sees of a
-    /// background that is not plain: out of line, since most backgrounds are.
+    /// What the camera's ray along `start` plus `k` column steps, whose squared length is
+    /// `square`, sees of a background that is not plain: out of line, since most backgrounds
+    /// are, and from the stretch's start, so that the loop need not carry the direction.
     #[cold]
     #[inline(never)]
-    fn background_along(&self, camera: &Camera, towards: Vec3, square: u64) -> Rgb {
+    fn background_along(&self, camera: &Camera, start: Vec3, k: usize, square: u64) -> Rgb {
+        // The direction towards one of the row's pixels lies within the camera's bounds, and so
+        // does each step of the way to it: `k` steps wrap nowhere (debug builds check), and
+        // need no saturating products, which are long sequences on the Cortex-M0.
+        let step = camera.column_step();
+        let along = |c: Fx| {
+            debug_assert!(c.to_bits().checked_mul(k as i32).is_some());
+            Fx::from_bits(c.to_bits().wrapping_mul(k as i32))
+        };
+        let towards = match k {
+            0 => start,
+            _ => start.plus(Vec3::new(along(step.x), along(step.y), along(step.z))),
+        };
         let ray = camera.ray_along(towards, square);
         rgb_of(self.background().along(ray.dir))
     }
@@ -371,6 +390,33 @@ mod tests {
         }
         let q = (w as i128 * m as i128 + (1i128 << (shift - 1))) >> shift;
         q as i32
+    }
+
+    #[test]
+    fn a_stretchs_background_from_its_start_is_the_one_along_each_columns_direction() {
+        // The Cortex-M0 finds a column's direction from the stretch's start; the others pass it.
+        let scene = crate::demo::classic();
+        // Tilted and rolled, so that the column step has all three components.
+        let camera = Camera::look_at([0.0, 0.0, 0.0], [0.7, 0.4, -1.0])
+            .up([0.3, 1.0, 0.2])
+            .fov_degrees(70.0)
+            .size(crate::Size::new(97, 61))
+            .build()
+            .unwrap();
+        let step = camera.column_step();
+        assert!([step.x, step.y, step.z].iter().all(|&c| c != Fx::ZERO));
+        for row in [0, 7, 30, 60] {
+            let start = camera.row_start(row);
+            for k in [1, 2, 48, 96] {
+                let towards = start.plus(step.times(k as i32));
+                let square = towards.length_squared_wide();
+                assert_eq!(
+                    scene.background_along(&camera, start, k, square),
+                    scene.background_along(&camera, towards, 0, square),
+                    "row {row}, column {k}"
+                );
+            }
+        }
     }
 
     #[test]
