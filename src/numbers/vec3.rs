@@ -239,8 +239,10 @@ impl Vec3 {
     }
 
     /// Whether `self · o > 0`, exactly, for two unit vectors (components below 2¹⁷ raw): on
-    /// the side a surface's normal faces. Where a 64-bit product is a long sequence, from the
-    /// split products of the exact dot product (`split_dot_parts`), a third of the cost.
+    /// the side a surface's normal faces. Where a 64-bit product is a long sequence, from
+    /// three 32-bit products of the components' top bits where they decide it (`coarse_dot`:
+    /// all but pairs near perpendicular, a sphere's silhouette), otherwise from the split
+    /// products of the exact dot product (`split_dot_parts`), a third of the cost.
     #[inline]
     pub(crate) const fn dot_positive(self, o: Vec3) -> bool {
         debug_assert!(
@@ -248,6 +250,12 @@ impl Vec3 {
             "dot_positive: not two unit vectors"
         );
         if fx::NO_LONG_MULTIPLY {
+            // Most pairs are decided by their components' top bits alone (`coarse_dot`); only
+            // those within a few hundredths of perpendicular take the exact sum.
+            let coarse = coarse_dot(self, o);
+            if coarse.unsigned_abs() > COARSE_MARGIN {
+                return coarse > 0;
+            }
             let (high, low) = split_dot_parts(self, o);
             ((high as i64) << 16) + low as i64 > 0
         } else {
@@ -437,6 +445,25 @@ const fn split_dot_parts(u: Vec3, v: Vec3) -> (i32, u64) {
     (x.0.wrapping_add(y.0).wrapping_add(z.0), x.1 + y.1 + z.1)
 }
 
+/// `S = Σ a·a'` for two vectors whose components lie within ±2¹⁷ raw, each component
+/// `c = 2⁸·a + α` cut to its top bits `a = c >> 8` (in −2⁹..=2⁹) and `α` in 0..2⁸: three
+/// 32-bit products. The exact dot product is `2¹⁶·S + R`, where each component adds to `R`
+/// `2⁸·(a·α' + α·a') + α·α'`, in −66 846 720..=66 911 745 (`|a·α' + α·a'| ≤ 2·2⁹·255`), so
+/// `|R| < 200 735 236 < 3063·2¹⁶`: for `|S| >` [`COARSE_MARGIN`] the dot product has the sign
+/// of `S`. For unit vectors that leaves undecided only pairs within about 0.047 of
+/// perpendicular. Compiled everywhere, so the host tests check it.
+#[inline]
+const fn coarse_dot(u: Vec3, v: Vec3) -> i32 {
+    const fn top(c: Fx) -> i32 {
+        c.to_bits() >> 8
+    }
+    top(u.x) * top(v.x) + top(u.y) * top(v.y) + top(u.z) * top(v.z)
+}
+
+/// What [`coarse_dot`]'s sum must pass for its sign to be the exact dot product's: at least
+/// 3 062, taken as 3·2¹⁰.
+const COARSE_MARGIN: u32 = 3 << 10;
+
 /// The exact product of two raw values, as [`fx::wide_mul`]; where a 64-bit product is a
 /// long sequence ([`fx::NO_LONG_MULTIPLY`]), a zero first factor skips it. Floors and walls
 /// have normals with two zero components, and their dot products put the normal first.
@@ -484,6 +511,67 @@ impl Neg for Vec3 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_coarse_dot_past_its_margin_has_the_exact_dot_products_sign() {
+        let mut rng = crate::xorshift::XorShift(0x5851_f42d_4c95_7f2d);
+        // Components built from their top bits and low byte, the extremes (±2⁹, 255) most
+        // often, where the low bytes' share is largest; and random unit vectors.
+        let part = |rng: &mut crate::xorshift::XorShift| {
+            let r = rng.next();
+            let top = match r % 4 {
+                0 => -512,
+                1 => 511,
+                _ => (r >> 8) as i32 % 513,
+            };
+            let low = if r & 0x30 == 0 {
+                (r >> 40) as i32 & 0xff
+            } else {
+                255
+            };
+            (top * 256 + low).clamp(-(1 << 17), 1 << 17)
+        };
+        // The rest `R` is largest with every component at `−2⁹·2⁸ + 255` in both vectors:
+        // −200 345 085, within 6 units of 2¹⁶ of the bound, which the margin must cover.
+        let corner = Fx::from_bits(-512 * 256 + 255);
+        let corner = Vec3::new(corner, corner, corner);
+        let rest = |u: Vec3, v: Vec3| u.dot_wide_exact(v) - ((coarse_dot(u, v) as i64) << 16);
+        assert_eq!(rest(corner, corner), -200_345_085);
+        let (mut decided, mut undecided) = (0, 0);
+        for i in 0..400_000 {
+            let (u, v) = if i % 2 == 0 {
+                let mut c = || Fx::from_bits(part(&mut rng));
+                (Vec3::new(c(), c(), c()), Vec3::new(c(), c(), c()))
+            } else {
+                let mut c = || Fx::from_bits((rng.next() as i32) >> 12);
+                let u = Vec3::new(c(), c(), c()).normalize_or_zero();
+                // v near perpendicular to u half the time.
+                let w = Vec3::new(c(), c(), c()).normalize_or_zero();
+                let v = if i % 4 == 1 {
+                    (w - u.scale(u.dot(w))).normalize_or_zero()
+                } else {
+                    w
+                };
+                (u, v)
+            };
+            let coarse = coarse_dot(u, v);
+            assert!(
+                rest(u, v).abs() < (COARSE_MARGIN as i64 + 1) << 16,
+                "{u:?} · {v:?}"
+            );
+            if coarse.unsigned_abs() > COARSE_MARGIN {
+                assert_eq!(coarse > 0, u.dot_wide_exact(v) > 0, "{u:?} · {v:?}");
+                decided += 1;
+            } else {
+                undecided += 1;
+            }
+        }
+        assert!(rest(corner, corner).abs() < (COARSE_MARGIN as i64 + 1) << 16);
+        assert!(
+            decided > 100_000 && undecided > 10_000,
+            "{decided} / {undecided}"
+        );
+    }
 
     #[test]
     fn split_squared_lengths_are_the_exact_sums() {
