@@ -86,6 +86,22 @@ impl Vec3 {
         Vec3::new(t(self.x), t(self.y), t(self.z))
     }
 
+    /// `self · n` for a camera's column step `self` and a count `n` of columns within its row:
+    /// the direction towards any of a row's pixels lies within the camera's bounds, and so
+    /// does every whole number of steps up to it, so no product wraps (debug builds check).
+    /// No saturation: its products are long sequences on the Cortex-M0.
+    #[inline]
+    pub(crate) fn steps(self, n: i32) -> Self {
+        let t = |c: Fx| {
+            debug_assert!(
+                c.to_bits().checked_mul(n).is_some(),
+                "Vec3::steps: out of range"
+            );
+            Fx::from_bits(c.to_bits().wrapping_mul(n))
+        };
+        Vec3::new(t(self.x), t(self.y), t(self.z))
+    }
+
     /// The dot product as a Q32.32 raw value (`i64`, 2⁻³² units): exact wherever it fits,
     /// which it always does in the render path (each product is below 2⁶² in magnitude).
     /// Beyond that it saturates rather than wrap.

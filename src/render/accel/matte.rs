@@ -16,7 +16,10 @@
 //! Most of a level floor faces along an axis, and most of its columns lie where no sphere's
 //! shadow can fall (`accel/shadow_columns.rs`): there a hit needs no shadow ray, and so not
 //! the light's unit vector either, only its cosine with the normal, which is one of its
-//! components ([`Axis`]). Those columns are walked apart from the rest of the run.
+//! components ([`Axis`]). Those columns are walked apart from the rest of the run, in a loop
+//! of their own wherever each of them meets the plane (`Scene::lit_stretch`): under one light,
+//! on an unbounded plane of one colour, a column there costs a step of its offset, the
+//! cosine and the pixel's three products.
 
 use crate::geometry::plane::{Numerator, Plane, far_reach};
 use crate::numbers::fx::{self, Fx};
@@ -26,10 +29,10 @@ use crate::render::accel::row_rays::RowSquares;
 use crate::render::accel::shadow_columns::RunLine;
 use crate::render::camera::Camera;
 use crate::render::trace::Surface;
-use crate::scene::Scene;
 use crate::scene::colour::Rgb;
 use crate::scene::light::Light;
 use crate::scene::linear::rgb_of;
+use crate::scene::{Object, Scene};
 
 /// A run of columns whose rays can meet one matte plane only, object `index` (`plane`), whose
 /// numerator for rays from the eye is `num`, on a row whose column step is parallel to the
@@ -86,7 +89,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         let reach = scale.map_or(0, far_reach);
         let scale = scale.unwrap_or(Scale { m: 0, shift: 1 });
         let walk = |from: usize| Walk {
-            towards: towards.plus(step.times(from as i32)),
+            towards: towards.plus(step.steps(from as i32)),
             scale,
             reach,
         };
@@ -112,39 +115,6 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         let (before, rest) = out.split_at_mut(shadowed.start.min(out.len()));
         let (inside, after) = rest.split_at_mut(shadowed.len().min(rest.len()));
         let lights = self.lights();
-        // Each kind of stretch its own loop, which keeps its own values in registers: one loop
-        // for both, told apart by a flag, measured 1 to 1.5 % slower and 1.3 KB smaller.
-        if let Some(axis) = axis {
-            let diffuse_from =
-                |light: &Light, point: Vec3| match axis.cosine(light.position.minus(point)) {
-                    Some(cos) => fx::mul_unit(light.intensity, cos),
-                    None => Fx::ZERO,
-                };
-            // One light, the common case on a small screen, without a loop to set up.
-            let mut unshadowed = |point: Vec3| {
-                let diffuse = match lights {
-                    [only] => diffuse_from(only, point),
-                    lights => lights.iter().fold(Fx::ZERO, |sum, light| {
-                        sum.saturating_add(diffuse_from(light, point))
-                    }),
-                };
-                self.matte_pixel(material, diffuse, object.colour_at(point))
-            };
-            // Either may be empty, and is then not set up.
-            if !before.is_empty() {
-                self.matte_loop(camera, plane, walk(0), before, true, &mut unshadowed);
-            }
-            if !after.is_empty() {
-                self.matte_loop(
-                    camera,
-                    plane,
-                    walk(shadowed.end),
-                    after,
-                    true,
-                    &mut unshadowed,
-                );
-            }
-        }
         let mut shadowed_at = |point: Vec3| {
             at.point = point;
             let mut diffuse = Fx::ZERO;
@@ -155,13 +125,29 @@ impl<const N: usize, const L: usize> Scene<N, L> {
             }
             self.matte_pixel(material, diffuse, object.colour_at(point))
         };
+        // The stretches where no shadow ray needs a test, most of a floor: within reach at both
+        // ends, their own loop, which takes only the cosine; a stretch that reaches past FAR
+        // (rows near the horizon) the loop of every column, whose shadow rays then find
+        // nothing. Either may be empty, and is then not set up.
+        if let Some(axis) = axis {
+            for (from, stretch) in [(0, before), (shadowed.end, after)] {
+                let walk = walk(from);
+                if stretch.is_empty() {
+                    continue;
+                }
+                if walk.within(step, stretch.len()) {
+                    self.lit_stretch(camera, plane, object, axis, walk, stretch);
+                } else {
+                    self.matte_loop(camera, plane, walk, stretch, &mut shadowed_at);
+                }
+            }
+        }
         if !inside.is_empty() {
             self.matte_loop(
                 camera,
                 plane,
                 walk(shadowed.start),
                 inside,
-                false,
                 &mut shadowed_at,
             );
         }
@@ -170,11 +156,8 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// The walk along a stretch of a [`MatteRun`] that starts at `walk`: each column's hit on
     /// `plane`, shaded by `shade`, or the background where the plane is not met. Started at
     /// any column, it meets the same values as a walk from the run's start: the steps are
-    /// exact. With `reach_by_ends`, a stretch whose two ends lie within reach takes no reach
-    /// test at its other columns.
-    // Out of line: one copy for each kind of stretch, however many stretches a run has. Only
-    // the stretches without shadow rays, most of a floor, take `reach_by_ends`: the compiler
-    // makes a second loop for it, which the RV32's flash holds once but not twice.
+    /// exact.
+    // Out of line: one copy, however many stretches a run has.
     #[inline(never)]
     fn matte_loop(
         &self,
@@ -182,7 +165,6 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         plane: &Plane,
         walk: Walk,
         out: &mut [Rgb],
-        reach_by_ends: bool,
         shade: &mut impl FnMut(Vec3) -> Rgb,
     ) {
         let (eye, step) = (camera.eye(), camera.column_step());
@@ -194,18 +176,9 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         } = walk;
         let mut square = RowSquares::new(towards, step);
         let mut offsets = Offsets::new(scale, towards, step);
-        // `‖w‖²` is a convex quadratic along the stretch, exact in integers: within reach at both
-        // ends, it is within reach at every column, which then needs no squares of its own.
-        // Where they are carried by additions anyway (`RowSquares::now`), there is nothing to
-        // spare.
-        let last = towards.plus(step.times(out.len().saturating_sub(1) as i32));
-        let within = reach_by_ends
-            && !fx::NO_LONG_MULTIPLY
-            && square.now(towards) <= reach
-            && last.length_squared_wide() <= reach;
         let start = towards;
         for (k, pixel) in out.iter_mut().enumerate() {
-            let hit = if within || square.now(towards) <= reach {
+            let hit = if square.now(towards) <= reach {
                 plane.bounded_at(eye.plus(offsets.now()))
             } else {
                 None
@@ -227,23 +200,82 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         }
     }
 
+    /// A stretch of a [`MatteRun`] on `object` (`plane`, facing along `axis`) that starts at
+    /// `walk` and lies within reach at both ends, where no shadow ray needs a test:
+    /// [`Scene::matte_loop`]'s pixels, without its reach test or ray, and with each light's
+    /// cosine alone ([`Axis`]). Its own loop, which keeps the values the columns share in
+    /// registers.
+    // Out of line: one copy for every stretch.
+    #[inline(never)]
+    fn lit_stretch(
+        &self,
+        camera: &Camera,
+        plane: &Plane,
+        object: &Object,
+        axis: Axis,
+        walk: Walk,
+        out: &mut [Rgb],
+    ) {
+        let (eye, step) = (camera.eye(), camera.column_step());
+        let mut offsets = Offsets::new(walk.scale, walk.towards, step);
+        let material = &object.material;
+        // One light on an unbounded plane of one colour, the common case on a small screen:
+        // each column's direction to the light is the light's from the eye less the column's
+        // offset, exactly (`light − (eye + offset)`, every value within range), and there is no
+        // colour to look up and no bound to test.
+        if let ([light], None, None) = (self.lights(), material.checker, plane.bounds()) {
+            let from_eye = light.position.minus(eye);
+            for pixel in out.iter_mut() {
+                let diffuse = match axis.cosine(from_eye.minus(offsets.now())) {
+                    Some(cos) => fx::mul_unit(light.intensity, cos),
+                    None => Fx::ZERO,
+                };
+                *pixel = self.matte_pixel(material, diffuse, material.colour);
+                offsets.step();
+            }
+            return;
+        }
+        let diffuse_from =
+            |light: &Light, point: Vec3| match axis.cosine(light.position.minus(point)) {
+                Some(cos) => fx::mul_unit(light.intensity, cos),
+                None => Fx::ZERO,
+            };
+        for (k, pixel) in out.iter_mut().enumerate() {
+            *pixel = match plane.bounded_at(eye.plus(offsets.now())) {
+                Some(point) => {
+                    let diffuse = self.lights().iter().fold(Fx::ZERO, |sum, light| {
+                        sum.saturating_add(diffuse_from(light, point))
+                    });
+                    self.matte_pixel(material, diffuse, object.colour_at(point))
+                }
+                None => self.background_past_bounds(camera, walk.towards, k),
+            };
+            offsets.step();
+        }
+    }
+
+    /// What column `k` of a stretch that starts along `start` sees past a plane's bounds.
+    #[cold]
+    #[inline(never)]
+    fn background_past_bounds(&self, camera: &Camera, start: Vec3, k: usize) -> Rgb {
+        match self.background().plain_colour() {
+            Some(sky) => sky,
+            None => {
+                let towards = start.plus(camera.column_step().steps(k as i32));
+                self.background_along(camera, towards, 0, towards.length_squared_wide())
+            }
+        }
+    }
+
     /// What the camera's ray along `start` plus `k` column steps, whose squared length is
     /// `square`, sees of a background that is not plain: out of line, since most backgrounds
     /// are, and from the stretch's start, so that the loop need not carry the direction.
     #[cold]
     #[inline(never)]
     fn background_along(&self, camera: &Camera, start: Vec3, k: usize, square: u64) -> Rgb {
-        // The direction towards one of the row's pixels lies within the camera's bounds, and so
-        // does each step of the way to it: `k` steps wrap nowhere (debug builds check), and
-        // need no saturating products, which are long sequences on the Cortex-M0.
-        let step = camera.column_step();
-        let along = |c: Fx| {
-            debug_assert!(c.to_bits().checked_mul(k as i32).is_some());
-            Fx::from_bits(c.to_bits().wrapping_mul(k as i32))
-        };
         let towards = match k {
             0 => start,
-            _ => start.plus(Vec3::new(along(step.x), along(step.y), along(step.z))),
+            _ => start.plus(camera.column_step().steps(k as i32)),
         };
         let ray = camera.ray_along(towards, square);
         rgb_of(self.background().along(ray.dir))
@@ -257,6 +289,18 @@ struct Walk {
     towards: Vec3,
     scale: Scale,
     reach: u64,
+}
+
+impl Walk {
+    /// Whether a stretch of `len` columns from this walk's start, stepping by `step`, lies
+    /// within reach at both ends, and so at every column: `‖w‖²` is a convex quadratic along
+    /// the stretch, exact in integers.
+    fn within(&self, step: Vec3, len: usize) -> bool {
+        let last = self.towards.plus(step.steps(len.saturating_sub(1) as i32));
+        [self.towards, last]
+            .iter()
+            .all(|end| end.length_squared_wide() <= self.reach)
+    }
 }
 
 /// A facing normal along a coordinate axis, `±1` in one component and 0 in the others, as a
@@ -322,7 +366,10 @@ struct Offsets {
 // Both out of line on RV32, where the 64-bit shifts and carries are long sequences whose
 // copies in each loop its flash does not hold; in line elsewhere.
 impl Offsets {
-    #[cfg_attr(target_arch = "riscv32", inline(never))]
+    #[cfg_attr(
+        any(target_arch = "riscv32", not(target_has_atomic = "32")),
+        inline(never)
+    )]
     fn new(scale: Scale, start: Vec3, step: Vec3) -> Self {
         let m = scale.m as i64;
         // Past 63 every offset rounds to 0, and stays there (`offset` says why).

@@ -103,7 +103,7 @@ impl<'a, const N: usize, const L: usize> Runs<'a, N, L> {
     /// The unnormalised direction towards column `col` (see `Camera::row_start`): the value
     /// a walk along the row by column steps reaches, exactly.
     pub(crate) fn towards(&self, col: u16) -> Vec3 {
-        self.start + self.step.times(col as i32)
+        self.start.plus(self.step.steps(col as i32))
     }
 
     /// The next run: its first column, the column after its last, and the objects to try.

@@ -47,7 +47,7 @@ impl RunLine {
 
     /// `w(k)`: for one of the run's columns, fewer than 2¹⁶, that column's direction.
     fn towards_column(&self, k: usize) -> Vec3 {
-        self.towards.plus(self.step.times(k as i32))
+        self.towards.plus(self.step.steps(k as i32))
     }
 
     /// The columns (indices into the run) whose hits' shadow rays towards `light` the sphere
