@@ -79,13 +79,6 @@ impl Vec3 {
         )
     }
 
-    /// `self · n` for a whole number `n`, exact (saturating at the ends of the range).
-    #[inline]
-    pub(crate) fn times(self, n: i32) -> Self {
-        let t = |c: Fx| Fx::from_bits(c.to_bits().saturating_mul(n));
-        Vec3::new(t(self.x), t(self.y), t(self.z))
-    }
-
     /// `self · n` for a camera's column step `self` and a count `n` of columns within its row:
     /// the direction towards any of a row's pixels lies within the camera's bounds, and so
     /// does every whole number of steps up to it, so no product wraps (debug builds check).

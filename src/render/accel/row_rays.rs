@@ -79,7 +79,7 @@ impl Iterator for RowRays<'_> {
         let n = n.min(self.left as usize) as u16;
         if n > 0 {
             let step = self.camera.column_step();
-            self.towards = self.towards + step.times(n as i32);
+            self.towards = self.towards.plus(step.steps(n as i32));
             self.squares = RowSquares::new(self.towards, step);
             self.left -= n;
         }
