@@ -189,6 +189,50 @@ fn matte_floors_and_ceilings_equal_their_pixels_traced_one_by_one() {
     }
 }
 
+/// A floor, a ceiling and two walls of one colour each under one light, the common case that
+/// `render_row` walks in a loop of its own, seen level (the floor and ceiling meet each row
+/// along it) from eyes turned every way, so that the walls do too where a row runs along them,
+/// and the row moves along one or two axes.
+#[test]
+fn floors_ceilings_and_walls_under_one_light_equal_their_pixels_traced_one_by_one() {
+    use fixray::{Background, Camera, Light, Plane, Scene, Sphere};
+    let mut scene: Scene<8, 1> = Scene::new(
+        Light::new([-25.0, 30.0, 20.0], 0.8).unwrap(),
+        0.2,
+        Background::plain(Rgb::new(40, 60, 90)),
+    )
+    .unwrap();
+    let planes = [
+        ([0.0, -3.0, 0.0], [0.0, 1.0, 0.0], Rgb::new(120, 150, 90)),
+        ([0.0, 45.0, 0.0], [0.0, -1.0, 0.0], Rgb::new(200, 190, 180)),
+        ([60.0, 0.0, 0.0], [-1.0, 0.0, 0.0], Rgb::new(150, 140, 170)),
+        ([0.0, 0.0, -80.0], [0.0, 0.0, 1.0], Rgb::new(90, 130, 160)),
+    ];
+    for (point, normal, colour) in planes {
+        scene
+            .add_plane(Plane::new(point, normal).unwrap(), colour)
+            .unwrap();
+    }
+    for (centre, r) in [([-4.0, -1.0, -14.0], 2.0), ([6.0, 2.0, -24.0], 3.5)] {
+        let ball = Sphere::new(centre, r).unwrap();
+        scene.add_sphere(ball, Rgb::new(200, 60, 40)).unwrap();
+    }
+    for yaw in [0.0, 25.0, 90.0, 180.0, 200.0, 270.0, 333.0] {
+        for pitch in [0.0, 12.0] {
+            let camera = Camera::orbit([0.0, 0.0, -16.0], 18.0)
+                .yaw_degrees(yaw)
+                .pitch_degrees(pitch)
+                .size(Size::new(61, 47))
+                .build()
+                .unwrap();
+            for shadows in [true, false] {
+                scene.set_shadows(shadows);
+                rows_match_tracing_each_pixel(&scene, &camera);
+            }
+        }
+    }
+}
+
 /// Spheres sunk into a floor, resting on it, and lifted off it by less than, about and more
 /// than the margin `render_row` keeps before trying a sphere's hit ahead of the floor's, and
 /// one through a wall, seen from eyes above the floor, just over it and below it: the planes

@@ -217,24 +217,33 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         out: &mut [Rgb],
     ) {
         let (eye, step) = (camera.eye(), camera.column_step());
-        let mut offsets = Offsets::new(walk.scale, walk.towards, step);
         let material = &object.material;
         // One light on an unbounded plane of one colour, the common case on a small screen:
         // each column's direction to the light is the light's from the eye less the column's
         // offset, exactly (`light − (eye + offset)`, every value within range), and there is no
-        // colour to look up and no bound to test.
+        // colour to look up and no bound to test. The row's step is parallel to the plane, so
+        // along the axis the offset, and the direction's component `c`, do not change: taken
+        // with their components across the axis first (`Axis::across`), a column steps two
+        // offsets and squares two components.
         if let ([light], None, None) = (self.lights(), material.checker, plane.bounds()) {
-            let from_eye = light.position.minus(eye);
+            let from_eye = axis.across(light.position.minus(eye));
+            let mut offsets =
+                Offsets::new(walk.scale, axis.across(walk.towards), axis.across(step));
+            let c = from_eye.z - offsets.now().z;
+            let c_square = Vec3::new(Fx::ZERO, Fx::ZERO, c).length_squared_wide();
             for pixel in out.iter_mut() {
-                let diffuse = match axis.cosine(from_eye.minus(offsets.now())) {
+                let e = from_eye.minus(offsets.now());
+                let square = Vec3::new(e.x, e.y, Fx::ZERO).length_squared_wide() + c_square;
+                let diffuse = match axis.cosine_of(c, square) {
                     Some(cos) => fx::mul_unit(light.intensity, cos),
                     None => Fx::ZERO,
                 };
                 *pixel = self.matte_pixel(material, diffuse, material.colour);
-                offsets.step();
+                offsets.step_across();
             }
             return;
         }
+        let mut offsets = Offsets::new(walk.scale, walk.towards, step);
         let diffuse_from =
             |light: &Light, point: Vec3| match axis.cosine(light.position.minus(point)) {
                 Some(cos) => fx::mul_unit(light.intensity, cos),
@@ -335,15 +344,26 @@ impl Axis {
     /// surface facing along the axis, without a shadow ray: `None` where it is not positive.
     #[inline(always)]
     fn cosine(self, to_light: Vec3) -> Option<Fx> {
-        let square = to_light.length_squared_wide();
-        let c = match self.index {
-            0 => to_light.x,
-            1 => to_light.y,
-            _ => to_light.z,
-        };
+        self.cosine_of(self.across(to_light).z, to_light.length_squared_wide())
+    }
+
+    /// [`Axis::cosine`] of a vector whose component along the axis is `c` and whose squared
+    /// length is `square`.
+    #[inline(always)]
+    fn cosine_of(self, c: Fx, square: u64) -> Option<Fx> {
         let c = Vec3::unit_component_with_square(c, square)?;
         let cos = if self.negative { -c } else { c };
         (cos > Fx::ZERO).then_some(cos)
+    }
+
+    /// `v` with its two components across the axis first and the one along it last (as `z`).
+    #[inline(always)]
+    fn across(self, v: Vec3) -> Vec3 {
+        match self.index {
+            0 => Vec3::new(v.y, v.z, v.x),
+            1 => Vec3::new(v.z, v.x, v.y),
+            _ => v,
+        }
     }
 }
 
@@ -414,6 +434,26 @@ impl Offsets {
         step(ox, rx, qx, px);
         step(oy, ry, qy, py);
         step(oz, rz, qz, pz);
+    }
+
+    /// [`Offsets::step`] for a walk that does not move along `z`: the other two alone.
+    #[inline]
+    fn step_across(&mut self) {
+        debug_assert!(
+            self.step_quotient[2] == 0 && self.step_remainder[2] == 0,
+            "Offsets::step_across: the walk moves along z"
+        );
+        let step = |offset: &mut i32, remainder: &mut u64, quotient: i32, part: u64| {
+            let (sum, carry) = remainder.overflowing_add(part);
+            *remainder = sum;
+            *offset = offset.wrapping_add(quotient).wrapping_add(carry as i32);
+        };
+        let [ox, oy, _] = &mut self.offset;
+        let [rx, ry, _] = &mut self.remainder;
+        let [qx, qy, _] = self.step_quotient;
+        let [px, py, _] = self.step_remainder;
+        step(ox, rx, qx, px);
+        step(oy, ry, qy, py);
     }
 }
 
