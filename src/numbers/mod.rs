@@ -3,6 +3,7 @@
 //!
 //! Everything above this layer computes with these and nothing else: no floats after set-up.
 
+pub(crate) mod bits;
 pub(crate) mod fx;
 pub(crate) mod isqrt;
 pub(crate) mod reciprocal;

@@ -6,6 +6,7 @@ use crate::geometry::plane::{Numerator, Plane};
 use crate::geometry::ray::Ray;
 use crate::geometry::shape::Shape;
 use crate::geometry::sphere::Sphere;
+use crate::numbers::bits;
 use crate::numbers::fx::Fx;
 use crate::numbers::isqrt::isqrt_once;
 use crate::numbers::vec3::Vec3;
@@ -48,7 +49,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
             if let Shape::Sphere(sphere) = object.shape
                 && !near_row_plane(&sphere, eye, normal)
             {
-                among &= !(1 << index);
+                among &= !bits::bit(index);
             }
         }
         among
@@ -136,7 +137,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
                 rest &= rest - 1;
                 try_object(index, &self.objects()[index], &mut nearest);
             }
-            if then == 0 || (nearest < 64 && enough & (1 << nearest) != 0) {
+            if then == 0 || (nearest < 64 && bits::has(enough, nearest)) {
                 break;
             }
             (rest, then) = (then, 0);
@@ -171,7 +172,7 @@ impl<const N: usize> Eye<N> {
         for (index, (num, object)) in numerators.iter_mut().zip(scene.objects()).enumerate() {
             if let Shape::Plane(plane) = object.shape {
                 *num = plane.numerator(origin);
-                planes |= 1u64.checked_shl(index as u32).unwrap_or(0);
+                planes |= if index < 64 { bits::bit(index) } else { 0 };
             }
         }
         Eye {
@@ -223,7 +224,9 @@ fn spheres_before_planes<const N: usize, const L: usize>(
                 before = before_plane(sphere, p, num, eye);
             }
         }
-        before_planes |= u64::from(before) << index;
+        if before {
+            before_planes |= bits::bit(index);
+        }
     }
     before_planes
 }

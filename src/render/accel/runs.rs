@@ -2,6 +2,7 @@
 //! can meet.
 
 use crate::geometry::shape::Shape;
+use crate::numbers::bits;
 use crate::numbers::vec3::Vec3;
 use crate::render::accel::cull::{Eye, row_ball};
 use crate::render::accel::shadow_rows::row_shadowers;
@@ -60,7 +61,7 @@ impl<'a, const N: usize, const L: usize> Runs<'a, N, L> {
         };
         for (index, object) in scene.objects().iter().enumerate().take(own_bits) {
             match object.shape {
-                Shape::Sphere(sphere) if among & (1 << index) != 0 => {
+                Shape::Sphere(sphere) if bits::has(among, index) => {
                     // What the row's rays can meet of the sphere, and the columns that holds.
                     let (centre, radius) = match row_normal {
                         Some(normal) => row_ball(&sphere, camera.eye(), normal),
@@ -68,10 +69,10 @@ impl<'a, const N: usize, const L: usize> Runs<'a, N, L> {
                     };
                     if let Some(span) = camera.column_span(centre, radius) {
                         runs.spans[index] = span;
-                        runs.bounded |= 1 << index;
+                        runs.bounded |= bits::bit(index);
                     }
                 }
-                Shape::Plane(_) => runs.planes |= 1 << index,
+                Shape::Plane(_) => runs.planes |= bits::bit(index),
                 Shape::Sphere(_) => {}
             }
         }
@@ -120,10 +121,10 @@ impl<'a, const N: usize, const L: usize> Runs<'a, N, L> {
             rest &= rest - 1;
             let (first, last) = self.spans[index as usize];
             if col < first {
-                here &= !(1 << index);
+                here &= !bits::bit(index as usize);
                 until = until.min(first);
             } else if col > last {
-                here &= !(1 << index);
+                here &= !bits::bit(index as usize);
             } else {
                 until = until.min(last.saturating_add(1));
             }
@@ -139,7 +140,7 @@ impl<'a, const N: usize, const L: usize> Runs<'a, N, L> {
                     && let Shape::Plane(plane) = object.shape
                     && misses_all(plane.normal(), self.eye.numerator(index).value, first, last)
                 {
-                    here &= !(1 << index);
+                    here &= !bits::bit(index);
                 }
             }
         }
