@@ -90,10 +90,10 @@
 //!
 //! | chip | [`Viewport::render`], one-row buffer | `picture::<Rgb565, 160>()?.draw` |
 //! | --- | ---: | ---: |
-//! | Cortex-M0 (`thumbv6m-none-eabi`) | 2 824 / 3 556 | 3 320 / 4 052 |
-//! | Cortex-M3 (`thumbv7m-none-eabi`) | 2 480 / 3 080 | 2 984 / 3 584 |
-//! | Cortex-M4F (`thumbv7em-none-eabihf`) | 2 520 / 3 124 | 3 024 / 3 628 |
-//! | RV32IMC (`riscv32imc-unknown-none-elf`) | 2 000 / 2 832 | 2 496 / 3 328 |
+//! | Cortex-M0 (`thumbv6m-none-eabi`) | 2 920 / 3 556 | 3 416 / 4 052 |
+//! | Cortex-M3 (`thumbv7m-none-eabi`) | 2 504 / 3 072 | 3 008 / 3 576 |
+//! | Cortex-M4F (`thumbv7em-none-eabihf`) | 2 552 / 3 124 | 3 056 / 3 628 |
+//! | RV32IMC (`riscv32imc-unknown-none-elf`) | 2 016 / 2 832 | 2 512 / 3 328 |
 //!
 //! The classic scene, with mirrors, glass, highlights and three lights' shadows, takes the
 //! deepest path; a picture adds its row buffer (480 bytes at 160 columns) and a few words to
