@@ -70,6 +70,16 @@ const RSQRT_KNOTS: [u32; 194] = {
 )]
 #[must_use]
 pub(crate) const fn rsqrt_unit(s: u64) -> (u32, u32) {
+    rsqrt_unit_in_line(s)
+}
+
+/// [`rsqrt_unit`], in line wherever it is called: for the few callers that take a root a
+/// pixel or a column with many values live (a floor's cosine, a light's direction, on RV32 the
+/// sphere test's root), where a call would move those values out of the registers it
+/// clobbers. Each caller says on which chips it takes it.
+#[inline(always)]
+#[must_use]
+pub(crate) const fn rsqrt_unit_in_line(s: u64) -> (u32, u32) {
     // 0 has no reciprocal root, and no bit for the table to be indexed by.
     debug_assert!(s >= 1, "rsqrt: zero argument");
     // s < 2^p with p even, and s ≥ 2^(p−2).

@@ -4,7 +4,7 @@ use core::ops::{Add, Neg, Sub};
 
 use crate::numbers::fx::{self, Fx};
 use crate::numbers::isqrt::isqrt_once;
-use crate::numbers::reciprocal::rsqrt_unit;
+use crate::numbers::reciprocal::{rsqrt_unit, rsqrt_unit_in_line};
 
 /// A point or a direction with three Q16.16 components.
 ///
@@ -366,6 +366,27 @@ impl Vec3 {
         ))
     }
 
+    /// [`Vec3::normalize_with_square`] with the reciprocal root in line
+    /// ([`rsqrt_unit_in_line`]); but on the Cortex-M0, whose flash the firmware is held to,
+    /// where the root stays a call.
+    #[inline(always)]
+    pub(crate) const fn normalize_in_line(self, square: u64) -> Option<Vec3> {
+        debug_assert!(
+            square == self.length_squared_wide(),
+            "normalize_in_line: square is not the vector's squared length"
+        );
+        if fx::NO_LONG_MULTIPLY || square == 0 {
+            return self.normalize_with_square(square);
+        }
+        let (y, shift) = rsqrt_unit_in_line(square);
+        let shift = 14 + shift;
+        Some(Vec3::new(
+            unit_part(self.x, y, shift),
+            unit_part(self.y, y, shift),
+            unit_part(self.z, y, shift),
+        ))
+    }
+
     /// The component along `c` of the unit vector along a vector whose component `c` is and
     /// whose squared length is `square`: [`Vec3::normalize_with_square`]'s, bit for bit,
     /// without the other two, where the unit vector is only dotted with an axis.
@@ -375,6 +396,21 @@ impl Vec3 {
             Some((y, shift)) => Some(unit_part(c, y, shift)),
             None => None,
         }
+    }
+
+    /// [`Vec3::unit_component_with_square`] with the reciprocal root in line
+    /// ([`rsqrt_unit_in_line`]), for a loop that takes one a column; but on the Cortex-M0,
+    /// whose flash the firmware is held to, where the root stays a call.
+    #[inline(always)]
+    pub(crate) const fn unit_component_in_line(c: Fx, square: u64) -> Option<Fx> {
+        if fx::NO_LONG_MULTIPLY {
+            return Vec3::unit_component_with_square(c, square);
+        }
+        if square == 0 {
+            return None;
+        }
+        let (y, shift) = rsqrt_unit_in_line(square);
+        Some(unit_part(c, y, 14 + shift))
     }
 
     /// The unit vector along `self`, or the zero vector when `self` is zero.
@@ -628,12 +664,15 @@ mod tests {
             );
             let square = v.length_squared_wide();
             let unit = v.normalize_with_square(square);
+            // In line or called, the root is the same.
+            assert_eq!(v.normalize_in_line(square), unit, "{v:?}");
             for (c, u) in [
                 (v.x, unit.map(|u| u.x)),
                 (v.y, unit.map(|u| u.y)),
                 (v.z, unit.map(|u| u.z)),
             ] {
                 assert_eq!(Vec3::unit_component_with_square(c, square), u, "{v:?}");
+                assert_eq!(Vec3::unit_component_in_line(c, square), u, "{v:?}");
             }
         }
     }

@@ -513,7 +513,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         } = *at;
         let to_light = light.position.minus(point);
         let distance_squared = to_light.length_squared_wide();
-        let l = to_light.normalize_with_square(distance_squared)?;
+        let l = to_light.normalize_in_line(distance_squared)?;
         let cos = normal.dot_exact(l);
         if cos <= Fx::ZERO {
             return None;

@@ -234,7 +234,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
             for pixel in out.iter_mut() {
                 let e = from_eye.minus(offsets.now());
                 let square = Vec3::new(e.x, e.y, Fx::ZERO).length_squared_wide() + c_square;
-                let diffuse = match axis.cosine_of(c, square) {
+                let diffuse = match axis.cosine_in_line(c, square) {
                     Some(cos) => fx::mul_unit(light.intensity, cos),
                     None => Fx::ZERO,
                 };
@@ -352,6 +352,14 @@ impl Axis {
     #[inline(always)]
     fn cosine_of(self, c: Fx, square: u64) -> Option<Fx> {
         let c = Vec3::unit_component_with_square(c, square)?;
+        let cos = if self.negative { -c } else { c };
+        (cos > Fx::ZERO).then_some(cos)
+    }
+
+    /// [`Axis::cosine_of`] with the reciprocal root in line.
+    #[inline(always)]
+    fn cosine_in_line(self, c: Fx, square: u64) -> Option<Fx> {
+        let c = Vec3::unit_component_in_line(c, square)?;
         let cos = if self.negative { -c } else { c };
         (cos > Fx::ZERO).then_some(cos)
     }
