@@ -93,7 +93,7 @@
 //! | Cortex-M0 (`thumbv6m-none-eabi`) | 2 920 / 3 556 | 3 416 / 4 052 |
 //! | Cortex-M3 (`thumbv7m-none-eabi`) | 2 504 / 3 072 | 3 008 / 3 576 |
 //! | Cortex-M4F (`thumbv7em-none-eabihf`) | 2 552 / 3 124 | 3 056 / 3 628 |
-//! | RV32IMC (`riscv32imc-unknown-none-elf`) | 2 016 / 2 832 | 2 512 / 3 328 |
+//! | RV32IMC (`riscv32imc-unknown-none-elf`) | 1 996 / 2 812 | 2 492 / 3 308 |
 //!
 //! The classic scene, with mirrors, glass, highlights and three lights' shadows, takes the
 //! deepest path; a picture adds its row buffer (480 bytes at 160 columns) and a few words to
