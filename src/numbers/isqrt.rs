@@ -49,9 +49,8 @@ pub const fn isqrt(x: u64) -> u64 {
 }
 
 // The reciprocal root as `estimate` takes it: in line on RV32, where a call moves the sphere
-// test's values out of the registers it clobbers (1 % faster for 0.3 KB); elsewhere the one
-// copy (on the Armv7-M cores in line where the compiler finds it pays; forced in line there,
-// and on the Cortex-M0, it measured slower).
+// test's values out of the registers it clobbers; elsewhere the one copy, which the Armv7-M
+// cores take in line where the compiler finds that pays, and the Cortex-M0's flash holds once.
 #[cfg(not(target_arch = "riscv32"))]
 use crate::numbers::reciprocal::rsqrt_unit as seed;
 #[cfg(target_arch = "riscv32")]

@@ -229,7 +229,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
             let from_eye = axis.across(light.position.minus(eye));
             let mut offsets =
                 Offsets::new(walk.scale, axis.across(walk.towards), axis.across(step));
-            let c = from_eye.z - offsets.now().z;
+            let c = from_eye.minus(offsets.now()).z;
             let c_square = Vec3::new(Fx::ZERO, Fx::ZERO, c).length_squared_wide();
             for pixel in out.iter_mut() {
                 let e = from_eye.minus(offsets.now());
