@@ -5,6 +5,7 @@
 /// The set of object `i` alone, for `i` below 64.
 #[inline]
 pub(crate) const fn bit(i: usize) -> u64 {
+    debug_assert!(i < 64, "bits::bit: no object's bit past the 64th");
     let one = 1u64 << (i & 31);
     if i < 32 { one } else { one << 32 }
 }
@@ -12,6 +13,7 @@ pub(crate) const fn bit(i: usize) -> u64 {
 /// Whether `set` holds object `i`, for `i` below 64.
 #[inline]
 pub(crate) const fn has(set: u64, i: usize) -> bool {
+    debug_assert!(i < 64, "bits::has: no object's bit past the 64th");
     let word = if i < 32 {
         set as u32
     } else {
