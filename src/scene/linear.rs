@@ -1,6 +1,6 @@
 //! The arithmetic of shading: colours in linear Q16.16 units, and powers for highlights.
 
-use crate::numbers::fx::Fx;
+use crate::numbers::fx::{self, Fx};
 use crate::scene::colour::Rgb;
 
 /// A colour being summed up, one Q16.16 value a channel, 1.0 standing for 255.
@@ -52,9 +52,10 @@ pub(crate) fn rgb_of(c: Linear) -> Rgb {
 #[must_use]
 pub(crate) const fn powi(base: Fx, exponent: u16) -> Fx {
     const ONE: u64 = 1 << 31;
-    // Both at most 2³¹: the product fits.
+    // Both at most 2³¹, so each fits 32 bits and the product 64: the chip's 32 × 32 → 64-bit
+    // product (`fx::wide_mul_u32`), not a 64 × 64 one (a library call on the Cortex-M0).
     const fn mul(a: u64, b: u64) -> u64 {
-        (a * b + (1 << 30)) >> 31
+        (fx::wide_mul_u32(a as u32, b as u32) + (1 << 30)) >> 31
     }
     let raw = base.to_bits();
     let clamped = if raw < 0 {
