@@ -428,20 +428,11 @@ impl Offsets {
     #[cfg_attr(not(target_arch = "riscv32"), inline)]
     #[cfg_attr(target_arch = "riscv32", inline(never))]
     fn step(&mut self) {
-        let step = |offset: &mut i32, remainder: &mut u64, quotient: i32, part: u64| {
-            if quotient != 0 || part != 0 {
-                let (sum, carry) = remainder.overflowing_add(part);
-                *remainder = sum;
-                *offset = offset.wrapping_add(quotient).wrapping_add(carry as i32);
+        for i in 0..3 {
+            if self.step_quotient[i] != 0 || self.step_remainder[i] != 0 {
+                self.step_component(i);
             }
-        };
-        let [ox, oy, oz] = &mut self.offset;
-        let [rx, ry, rz] = &mut self.remainder;
-        let [qx, qy, qz] = self.step_quotient;
-        let [px, py, pz] = self.step_remainder;
-        step(ox, rx, qx, px);
-        step(oy, ry, qy, py);
-        step(oz, rz, qz, pz);
+        }
     }
 
     /// [`Offsets::step`] for a walk that does not move along `z`: the other two alone.
@@ -451,17 +442,19 @@ impl Offsets {
             self.step_quotient[2] == 0 && self.step_remainder[2] == 0,
             "Offsets::step_across: the walk moves along z"
         );
-        let step = |offset: &mut i32, remainder: &mut u64, quotient: i32, part: u64| {
-            let (sum, carry) = remainder.overflowing_add(part);
-            *remainder = sum;
-            *offset = offset.wrapping_add(quotient).wrapping_add(carry as i32);
-        };
-        let [ox, oy, _] = &mut self.offset;
-        let [rx, ry, _] = &mut self.remainder;
-        let [qx, qy, _] = self.step_quotient;
-        let [px, py, _] = self.step_remainder;
-        step(ox, rx, qx, px);
-        step(oy, ry, qy, py);
+        self.step_component(0);
+        self.step_component(1);
+    }
+
+    /// Component `i` on to the next column: the remainders' sum carries out of the word
+    /// exactly when it reaches `2^shift`, and the carry goes into the quotient.
+    #[inline(always)]
+    fn step_component(&mut self, i: usize) {
+        let (sum, carry) = self.remainder[i].overflowing_add(self.step_remainder[i]);
+        self.remainder[i] = sum;
+        self.offset[i] = self.offset[i]
+            .wrapping_add(self.step_quotient[i])
+            .wrapping_add(carry as i32);
     }
 }
 
