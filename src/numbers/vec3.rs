@@ -352,18 +352,7 @@ impl Vec3 {
     /// for callers that have it already, or can keep it up to date for less.
     #[inline]
     pub(crate) const fn normalize_with_square(self, square: u64) -> Option<Vec3> {
-        debug_assert!(
-            square == self.length_squared_wide(),
-            "normalize_with_square: square is not the vector's squared length"
-        );
-        let Some((y, shift)) = unit_scale(square) else {
-            return None;
-        };
-        Some(Vec3::new(
-            unit_part(self.x, y, shift),
-            unit_part(self.y, y, shift),
-            unit_part(self.z, y, shift),
-        ))
+        self.normalize_by::<false>(square)
     }
 
     /// [`Vec3::normalize_with_square`] with the reciprocal root in line
@@ -371,15 +360,19 @@ impl Vec3 {
     /// where the root stays a call.
     #[inline(always)]
     pub(crate) const fn normalize_in_line(self, square: u64) -> Option<Vec3> {
+        self.normalize_by::<true>(square)
+    }
+
+    /// [`Vec3::normalize_with_square`], the root in line where `IN_LINE` ([`unit_scale`]).
+    #[inline(always)]
+    const fn normalize_by<const IN_LINE: bool>(self, square: u64) -> Option<Vec3> {
         debug_assert!(
             square == self.length_squared_wide(),
-            "normalize_in_line: square is not the vector's squared length"
+            "normalize_with_square: square is not the vector's squared length"
         );
-        if fx::NO_LONG_MULTIPLY || square == 0 {
-            return self.normalize_with_square(square);
-        }
-        let (y, shift) = rsqrt_unit_in_line(square);
-        let shift = 14 + shift;
+        let Some((y, shift)) = unit_scale::<IN_LINE>(square) else {
+            return None;
+        };
         Some(Vec3::new(
             unit_part(self.x, y, shift),
             unit_part(self.y, y, shift),
@@ -392,7 +385,7 @@ impl Vec3 {
     /// without the other two, where the unit vector is only dotted with an axis.
     #[inline]
     pub(crate) const fn unit_component_with_square(c: Fx, square: u64) -> Option<Fx> {
-        match unit_scale(square) {
+        match unit_scale::<false>(square) {
             Some((y, shift)) => Some(unit_part(c, y, shift)),
             None => None,
         }
@@ -403,14 +396,10 @@ impl Vec3 {
     /// whose flash the firmware is held to, where the root stays a call.
     #[inline(always)]
     pub(crate) const fn unit_component_in_line(c: Fx, square: u64) -> Option<Fx> {
-        if fx::NO_LONG_MULTIPLY {
-            return Vec3::unit_component_with_square(c, square);
+        match unit_scale::<true>(square) {
+            Some((y, shift)) => Some(unit_part(c, y, shift)),
+            None => None,
         }
-        if square == 0 {
-            return None;
-        }
-        let (y, shift) = rsqrt_unit_in_line(square);
-        Some(unit_part(c, y, 14 + shift))
     }
 
     /// The unit vector along `self`, or the zero vector when `self` is zero.
@@ -422,14 +411,19 @@ impl Vec3 {
 
 /// `1/‖v‖` for a vector `v` whose squared length is `square`, as a factor `y` and a shift
 /// (`y · 2^−shift · 2¹⁶`), or `None` for the zero vector: what each of a unit vector's
-/// components is multiplied by ([`unit_part`]).
+/// components is multiplied by ([`unit_part`]). With `IN_LINE`, the root is taken in line
+/// ([`rsqrt_unit_in_line`]) but on the Cortex-M0, whose flash holds one copy of it.
 #[inline]
-const fn unit_scale(square: u64) -> Option<(u32, u32)> {
+const fn unit_scale<const IN_LINE: bool>(square: u64) -> Option<(u32, u32)> {
     if square == 0 {
         return None;
     }
     // 1/‖self‖ in units of 2⁻¹⁶ is y · 2⁻⁽³⁰⁺ˢʰⁱᶠᵗ⁾ · 2¹⁶.
-    let (y, shift) = rsqrt_unit(square);
+    let (y, shift) = if IN_LINE && !fx::NO_LONG_MULTIPLY {
+        rsqrt_unit_in_line(square)
+    } else {
+        rsqrt_unit(square)
+    };
     Some((y, 14 + shift))
 }
 
