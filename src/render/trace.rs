@@ -382,7 +382,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
                     return;
                 }
                 // `v`'s squared length is taken again here rather than handed over from the
-                // test: handed over, the M0's copy of the normalisation measured longer.
+                // test: a square to hand over lengthens the M0's copy of the normalisation.
                 let Some(half) = v.try_normalize() else {
                     return;
                 };

@@ -42,8 +42,8 @@ impl Background {
 
     /// [`Background::along`] for a direction whose `y` is `height`: all a gradient reads.
     // Out of line on ARMv6-M and RV32, whose flash the firmware is held to: one copy for the
-    // rays that miss and the runs of sky. In line on the Armv7-M cores, where out of line the
-    // demo frame, which has neither, measured 1 % slower.
+    // rays that miss and the runs of sky. In line on the Armv7-M cores, where the call costs
+    // the frames more than the copies cost flash.
     #[cfg_attr(
         any(target_arch = "riscv32", not(target_has_atomic = "32")),
         inline(never)
