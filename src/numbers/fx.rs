@@ -36,6 +36,9 @@ pub(crate) const FRAC: u32 = 16;
 pub(crate) const NO_LONG_MULTIPLY: bool =
     cfg!(all(target_arch = "arm", not(target_has_atomic = "32")));
 
+/// ARMv6-M, which has no divide instruction: there a 32-bit division is a library call.
+pub(crate) const NO_DIVIDE: bool = NO_LONG_MULTIPLY;
+
 /// Chips without a count-leading-zeros instruction: ARMv6-M, and RV32 without Zbb.
 const NO_CLZ: bool = cfg!(any(
     all(target_arch = "arm", not(target_has_atomic = "32")),

@@ -2,7 +2,7 @@
 
 use crate::check;
 use crate::error::{Error, Quantity};
-use crate::numbers::fx::Fx;
+use crate::numbers::fx::{self, Fx};
 use crate::scene::colour::Rgb;
 use crate::scene::linear::least_lit_base;
 
@@ -184,7 +184,11 @@ impl Material {
             return Err(e);
         }
         let mut material = self;
-        material.checker = Some(Checker { size, other });
+        material.checker = Some(Checker {
+            size,
+            other,
+            shift: power_of_two(size),
+        });
         Ok(material)
     }
 
@@ -324,6 +328,22 @@ impl From<Rgb> for Material {
 pub struct Checker {
     size: Fx,
     other: Rgb,
+    /// `k` where `size` is `2^k` raw units, [`NOT_A_POWER`] otherwise: then a square's index
+    /// is a shift, where a division is a library call.
+    shift: u8,
+}
+
+/// [`Checker`]'s `shift` for a size that is not a power of two.
+const NOT_A_POWER: u8 = u8::MAX;
+
+/// `k` for a raw `size` of `2^k`, [`NOT_A_POWER`] for any other.
+const fn power_of_two(size: Fx) -> u8 {
+    let raw = size.to_bits();
+    if raw > 0 && raw & (raw - 1) == 0 {
+        raw.trailing_zeros() as u8
+    } else {
+        NOT_A_POWER
+    }
 }
 
 impl Checker {
@@ -339,15 +359,28 @@ impl Checker {
         self.other
     }
 
+    /// `⌊c / size⌋`, the index of the squares' row or column that coordinate `c` lies in;
+    /// with `SHIFTS`, by an arithmetic shift where the size is a power of two. Shifts are
+    /// taken only where a division is a library call (the Cortex-M0): elsewhere it is one
+    /// instruction, and the test for a power would cost more. Both forms are compiled
+    /// everywhere, so the host tests check them.
+    #[inline(always)]
+    fn index<const SHIFTS: bool>(&self, c: Fx) -> i32 {
+        if SHIFTS && self.shift != NOT_A_POWER {
+            c.to_bits() >> self.shift
+        } else {
+            // Positive, as its constructor checked; `max` keeps the division visibly safe. A
+            // positive divisor cannot overflow a 32-bit division, which every chip fixray
+            // targets does in hardware or in a short routine (a 64-bit one is a long call).
+            c.to_bits().div_euclid(self.size.to_bits().max(1))
+        }
+    }
+
     /// The colour of the square at plane coordinates `uv`.
     #[must_use]
     pub fn colour_at(&self, even: Rgb, uv: [Fx; 2]) -> Rgb {
-        // Positive, as its constructor checked; `max` keeps the division visibly safe. A
-        // positive divisor cannot overflow a 32-bit division, which every chip fixray targets
-        // does in hardware or in a short routine (a 64-bit one is a long call), and the sum's
-        // parity survives wrapping.
-        let size = self.size.to_bits().max(1);
-        let index = |c: Fx| c.to_bits().div_euclid(size);
+        // The sum's parity survives wrapping.
+        let index = |c: Fx| self.index::<{ fx::NO_DIVIDE }>(c);
         if index(uv[0]).wrapping_add(index(uv[1])) & 1 == 0 {
             even
         } else {
@@ -403,6 +436,10 @@ mod tests {
                     };
                     let uv = [Fx::from_bits(u), Fx::from_bits(v)];
                     assert_eq!(checker.colour_at(even, uv), expected, "{u} {v} / {size}");
+                    // Both ways to an index, whichever this chip takes.
+                    let c = Fx::from_bits(u);
+                    assert_eq!(checker.index::<true>(c) as i64, index(u), "{u} / {size}");
+                    assert_eq!(checker.index::<false>(c) as i64, index(u), "{u} / {size}");
                 }
             }
         }
