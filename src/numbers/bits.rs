@@ -14,12 +14,13 @@ pub(crate) const fn bit(i: usize) -> u64 {
 #[inline]
 pub(crate) const fn has(set: u64, i: usize) -> bool {
     debug_assert!(i < 64, "bits::has: no object's bit past the 64th");
-    let word = if i < 32 {
-        set as u32
+    // A shift in each branch: a word chosen first and then shifted was folded back into a
+    // 64-bit shift by a variable amount, the library call this module is here to avoid.
+    if i < 32 {
+        (set as u32 >> i) & 1 != 0
     } else {
-        (set >> 32) as u32
-    };
-    (word >> (i & 31)) & 1 != 0
+        ((set >> 32) as u32 >> (i - 32)) & 1 != 0
+    }
 }
 
 #[cfg(test)]
