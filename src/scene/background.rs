@@ -42,8 +42,8 @@ impl Background {
 
     /// [`Background::along`] for a direction whose `y` is `height`: all a gradient reads.
     // Out of line on ARMv6-M and RV32, whose flash the firmware is held to: one copy for the
-    // rays that miss and the runs of sky. In line on the Armv7-M cores, where the call costs
-    // the frames more than the copies cost flash.
+    // rays that miss. In line on the Armv7-M cores, where the call costs the frames more than
+    // the copies cost flash. (A run of sky blends with a `Blend` of its own.)
     #[cfg_attr(
         any(target_arch = "riscv32", not(target_has_atomic = "32")),
         inline(never)
@@ -53,20 +53,48 @@ impl Background {
             // Nothing to blend.
             return [c.r, c.g, c.b].map(channel_to_linear);
         }
+        Blend::of(self).at(height)
+    }
+}
+
+/// A gradient's ends in linear units, converted once for the many heights of a run of sky:
+/// [`Background::along_height`]'s blend, which converts them at each call.
+#[derive(Clone, Copy)]
+pub(crate) struct Blend {
+    /// The bottom colour's channels.
+    bottom: Linear,
+    /// Each channel's way from the bottom colour to the top, within ±1.
+    span: Linear,
+}
+
+impl Blend {
+    /// `background`'s ends.
+    pub(crate) fn of(background: &Background) -> Blend {
+        let (b, t) = (background.bottom, background.top);
+        let bottom = [b.r, b.g, b.b].map(channel_to_linear);
+        let top = [t.r, t.g, t.b].map(channel_to_linear);
+        Blend {
+            bottom,
+            span: [top[0] - bottom[0], top[1] - bottom[1], top[2] - bottom[2]],
+        }
+    }
+
+    /// The colour seen along a direction whose `y` is `height` (see [`Background::along`]).
+    // In line in a run of sky's loop; but on ARMv6-M, whose flash the firmware is held to
+    // most tightly, one copy.
+    #[cfg_attr(all(target_arch = "arm", not(target_has_atomic = "32")), inline(never))]
+    #[cfg_attr(
+        not(all(target_arch = "arm", not(target_has_atomic = "32"))),
+        inline(always)
+    )]
+    pub(crate) fn at(&self, height: Fx) -> Linear {
         const MOST: Fx = Fx::from_bits((1 << 16) + 1);
         // 0 straight down, 1 straight up: within −2⁻¹⁶..=1, whatever the direction is.
         let s = (height.clamp(-MOST, MOST) + Fx::ONE) >> 1;
-        let mix = |b: u8, t: u8| {
-            let (b, t) = (channel_to_linear(b), channel_to_linear(t));
-            // `t − b` within ±1 and `s` within −2⁻¹⁶..=1: the product needs no saturation
-            // check, within `mul_unit`'s bounds (below 2¹⁴ times below 2).
-            b + crate::numbers::fx::mul_unit(t - b, s)
-        };
-        [
-            mix(self.bottom.r, self.top.r),
-            mix(self.bottom.g, self.top.g),
-            mix(self.bottom.b, self.top.b),
-        ]
+        // A span within ±1 and `s` within −2⁻¹⁶..=1: the product needs no saturation check,
+        // within `mul_unit`'s bounds (below 2¹⁴ times below 2).
+        let mix = |i: usize| self.bottom[i] + crate::numbers::fx::mul_unit(self.span[i], s);
+        [mix(0), mix(1), mix(2)]
     }
 }
 

@@ -12,6 +12,7 @@ use crate::numbers::vec3::Vec3;
 use crate::render::accel::row_rays::RowSquares;
 use crate::render::camera::Camera;
 use crate::scene::Scene;
+use crate::scene::background::Blend;
 use crate::scene::colour::Rgb;
 use crate::scene::linear::rgb_of;
 
@@ -25,10 +26,13 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         // Where a run's walk along the row starts (`Camera::row_start`).
         let mut towards = camera.towards(first.into(), row.into());
         let mut square = RowSquares::new(towards, step);
+        // The background's blend, as `Background::along_height` forms it, with its ends
+        // converted once.
+        let blend = Blend::of(&self.background());
         for pixel in out.iter_mut() {
             // A zero direction makes the zero ray (`Camera::ray_along`), whose height is 0.
             let height = Vec3::unit_component_with_square(towards.y, square.now(towards));
-            *pixel = rgb_of(self.background().along_height(height.unwrap_or(Fx::ZERO)));
+            *pixel = rgb_of(blend.at(height.unwrap_or(Fx::ZERO)));
             towards = towards.plus(step);
             square.step();
         }
