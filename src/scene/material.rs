@@ -324,7 +324,7 @@ impl From<Rgb> for Material {
 /// plane's normal is closest to is dropped — `(x, z)` for a floor, `(x, y)` for a wall facing
 /// ±z, `(y, z)` for a wall facing ±x. Square `(⌊u/size⌋, ⌊v/size⌋)` has the material's colour
 /// when the sum of its indices is even.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Clone, Copy, PartialEq, Eq)]
 pub struct Checker {
     size: Fx,
     other: Rgb,
@@ -343,6 +343,16 @@ const fn power_of_two(size: Fx) -> u8 {
         raw.trailing_zeros() as u8
     } else {
         NOT_A_POWER
+    }
+}
+
+// Written out so that it shows what the checker is, not the shift it keeps to find squares.
+impl core::fmt::Debug for Checker {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("Checker")
+            .field("size", &self.size)
+            .field("other", &self.other)
+            .finish()
     }
 }
 
@@ -392,6 +402,24 @@ impl Checker {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_checker_shows_its_size_and_other_colour() {
+        extern crate std;
+        let checker = Material::matte(Rgb::WHITE)
+            .with_checker_fx(Fx::from_num(2), Rgb::BLACK)
+            .unwrap()
+            .checker()
+            .unwrap();
+        assert_eq!(
+            std::format!("{checker:?}"),
+            std::format!(
+                "Checker {{ size: {:?}, other: {:?} }}",
+                Fx::from_num(2),
+                Rgb::BLACK
+            )
+        );
+    }
 
     #[test]
     fn checker_squares_are_those_of_the_exact_floor_division() {
