@@ -48,25 +48,44 @@ pub const fn isqrt(x: u64) -> u64 {
     r as u64
 }
 
-// The reciprocal root as `estimate` takes it: in line on RV32, where a call moves the sphere
-// test's values out of the registers it clobbers; elsewhere the one copy, which the Armv7-M
-// cores take in line where the compiler finds that pays, and the Cortex-M0's flash holds once.
-#[cfg(not(target_arch = "riscv32"))]
-use crate::numbers::reciprocal::rsqrt_unit as seed;
-#[cfg(target_arch = "riscv32")]
-use crate::numbers::reciprocal::rsqrt_unit_in_line as seed;
+/// `1/√x` as `(y, half)` (see `rsqrt`) and `x`'s top 32 bits at the bit length `2·half`, for
+/// [`estimate`]: below 2⁴⁴ the table's seed alone (2⁻²⁰·⁶ of it) leaves the estimate within 4
+/// of the root, a few whole steps, where the Newton step would cost three 64-bit products;
+/// the sphere tests' roots are there. The seed is taken in line with the mantissa it looked up
+/// (`rsqrt_unit_with_mantissa`): a call would move the sphere test's values out of the
+/// registers it clobbers, and the mantissa need not be found again. But on the Cortex-M0,
+/// whose flash holds one copy of the root, which hands back the root alone.
+#[cfg(not(all(target_arch = "arm", not(target_has_atomic = "32"))))]
+#[inline(always)]
+const fn root_and_mantissa(x: u64) -> (u32, u32, u32) {
+    if x < 1 << 44 {
+        crate::numbers::reciprocal::rsqrt_unit_with_mantissa(x)
+    } else {
+        let (y, half) = rsqrt(x);
+        (y, half, top_word(x, 2 * half))
+    }
+}
+
+/// [`root_and_mantissa`] on the Cortex-M0: the one copy of the root, the mantissa found again.
+#[cfg(all(target_arch = "arm", not(target_has_atomic = "32")))]
+#[inline(always)]
+const fn root_and_mantissa(x: u64) -> (u32, u32, u32) {
+    let (y, half) = if x < 1 << 44 {
+        crate::numbers::reciprocal::rsqrt_unit(x)
+    } else {
+        rsqrt(x)
+    };
+    (y, half, top_word(x, 2 * half))
+}
 
 /// `√x` for `x ≥ 2`, to within 4 below 2⁴⁴ and 8 above (the tests find 2 and 3): [`isqrt`]'s
 /// start.
 #[inline]
 const fn estimate(x: u64) -> u64 {
-    // 1/√x ≈ y · 2^−(30 + half), with x < 2^(2·half). Below 2⁴⁴ the table's seed alone
-    // (2⁻²⁰·⁶ of it) leaves the estimate within 4 of the root, a few whole steps, where the
-    // Newton step would cost three 64-bit products; the sphere tests' roots are there.
-    let (y, half) = if x < 1 << 44 { seed(x) } else { rsqrt(x) };
+    // 1/√x ≈ y · 2^−(30 + half), with x < 2^(2·half).
     // √x = x · (1/√x). With m the top 32 bits of x, x ≈ m · 2^(2·half − 32), so
     // √x ≈ m · y · 2^(half − 62).
-    let m = top_word(x, 2 * half);
+    let (y, half, m) = root_and_mantissa(x);
     let product = wide_mul_u32(m, y);
     if half <= 30 {
         // A shift of 32 or more, of the high word alone: no 64-bit shift by a variable

@@ -74,12 +74,21 @@ pub(crate) const fn rsqrt_unit(s: u64) -> (u32, u32) {
 }
 
 /// [`rsqrt_unit`], in line wherever it is called: for the few callers that take a root a
-/// pixel or a column with many values live (a floor's cosine, a light's direction, on RV32 the
-/// sphere test's root), where a call would move those values out of the registers it
-/// clobbers. Each caller says on which chips it takes it.
+/// pixel or a column with many values live (a floor's cosine, a light's direction, and, with
+/// its mantissa, the sphere test's root), where a call would move those values out of the
+/// registers it clobbers. Each caller says on which chips it takes it.
 #[inline(always)]
 #[must_use]
 pub(crate) const fn rsqrt_unit_in_line(s: u64) -> (u32, u32) {
+    let (y, half, _) = rsqrt_unit_with_mantissa(s);
+    (y, half)
+}
+
+/// [`rsqrt_unit_in_line`], and the mantissa `m` it looked up (`s`'s top 32 bits at an even bit
+/// length, `μ` in Q0.32), which the integer root's estimate multiplies by the root.
+#[inline(always)]
+#[must_use]
+pub(crate) const fn rsqrt_unit_with_mantissa(s: u64) -> (u32, u32, u32) {
     // 0 has no reciprocal root, and no bit for the table to be indexed by.
     debug_assert!(s >= 1, "rsqrt: zero argument");
     // s < 2^p with p even, and s ≥ 2^(p−2).
@@ -95,7 +104,7 @@ pub(crate) const fn rsqrt_unit_in_line(s: u64) -> (u32, u32) {
     // product fits 32 bits. The sums may wrap on the way, and come back exactly.
     let bend = k0.wrapping_add(k2).wrapping_sub(k1.wrapping_mul(2));
     let y = linear.wrapping_sub((((t * (65536 - t)) >> 17) * bend) >> 16);
-    (y, p / 2)
+    (y, p / 2, m)
 }
 
 /// `1/√s` for `s ≥ 1`, as [`rsqrt_unit`], to about 2⁻²⁹: its seed and one Newton step
@@ -253,6 +262,13 @@ mod tests {
         // powers of two it is scaled by), and random arguments across the whole range.
         let error = |s: u64| {
             let (y, shift) = rsqrt_unit(s);
+            // The in-line form with its mantissa gives the same root, and the mantissa is
+            // `s`'s top word at the root's bit length.
+            assert_eq!(
+                rsqrt_unit_with_mantissa(s),
+                (y, shift, top_word(s, 2 * shift)),
+                "{s}"
+            );
             let got = y as f64 / 2f64.powi(30 + shift as i32);
             (got * (s as f64).sqrt() - 1.0).abs()
         };
