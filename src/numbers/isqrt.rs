@@ -1,7 +1,7 @@
 //! The exact integer square root, kept in one place so that it can be swapped by measurement.
 
-use crate::numbers::fx::{top_word, wide_mul_u32};
-use crate::numbers::reciprocal::rsqrt;
+use crate::numbers::fx::{self, top_word, wide_mul_u32};
+use crate::numbers::reciprocal::{rsqrt, rsqrt_unit, rsqrt_unit_in_line};
 
 /// `floor(sqrt(x))` for every `u64`, exactly.
 ///
@@ -52,29 +52,15 @@ pub const fn isqrt(x: u64) -> u64 {
 /// [`estimate`]: below 2⁴⁴ the table's seed alone (2⁻²⁰·⁶ of it) leaves the estimate within 4
 /// of the root, a few whole steps, where the Newton step would cost three 64-bit products;
 /// the sphere tests' roots are there. The seed is taken in line with the mantissa it looked up
-/// (`rsqrt_unit_with_mantissa`): a call would move the sphere test's values out of the
-/// registers it clobbers, and the mantissa need not be found again. But on the Cortex-M0,
-/// whose flash holds one copy of the root, which hands back the root alone.
-#[cfg(not(all(target_arch = "arm", not(target_has_atomic = "32"))))]
+/// (`rsqrt_unit_in_line`): a call would move the sphere test's values out of the registers it
+/// clobbers, and the mantissa need not be found again. But on the Cortex-M0, whose flash holds
+/// one copy of the root, which hands back the root alone.
 #[inline(always)]
 const fn root_and_mantissa(x: u64) -> (u32, u32, u32) {
-    if x < 1 << 44 {
-        crate::numbers::reciprocal::rsqrt_unit_with_mantissa(x)
-    } else {
-        let (y, half) = rsqrt(x);
-        (y, half, top_word(x, 2 * half))
+    if x < 1 << 44 && !fx::NO_LONG_MULTIPLY {
+        return rsqrt_unit_in_line(x);
     }
-}
-
-/// [`root_and_mantissa`] on the Cortex-M0: the one copy of the root, the mantissa found again.
-#[cfg(all(target_arch = "arm", not(target_has_atomic = "32")))]
-#[inline(always)]
-const fn root_and_mantissa(x: u64) -> (u32, u32, u32) {
-    let (y, half) = if x < 1 << 44 {
-        crate::numbers::reciprocal::rsqrt_unit(x)
-    } else {
-        rsqrt(x)
-    };
+    let (y, half) = if x < 1 << 44 { rsqrt_unit(x) } else { rsqrt(x) };
     (y, half, top_word(x, 2 * half))
 }
 

@@ -70,25 +70,19 @@ const RSQRT_KNOTS: [u32; 194] = {
 )]
 #[must_use]
 pub(crate) const fn rsqrt_unit(s: u64) -> (u32, u32) {
-    rsqrt_unit_in_line(s)
-}
-
-/// [`rsqrt_unit`], in line wherever it is called: for the few callers that take a root a
-/// pixel or a column with many values live (a floor's cosine, a light's direction, and, with
-/// its mantissa, the sphere test's root), where a call would move those values out of the
-/// registers it clobbers. Each caller says on which chips it takes it.
-#[inline(always)]
-#[must_use]
-pub(crate) const fn rsqrt_unit_in_line(s: u64) -> (u32, u32) {
-    let (y, half, _) = rsqrt_unit_with_mantissa(s);
+    let (y, half, _) = rsqrt_unit_in_line(s);
     (y, half)
 }
 
-/// [`rsqrt_unit_in_line`], and the mantissa `m` it looked up (`s`'s top 32 bits at an even bit
-/// length, `μ` in Q0.32), which the integer root's estimate multiplies by the root.
+/// [`rsqrt_unit`], in line wherever it is called, and the mantissa `m` it looked up (`s`'s
+/// top 32 bits at an even bit length, `μ` in Q0.32): for the few callers that take a root a
+/// pixel or a column with many values live (a floor's cosine, a light's direction, the sphere
+/// test's integer root, whose estimate multiplies the root by that mantissa), where a call
+/// would move those values out of the registers it clobbers. Each caller says on which chips
+/// it takes it.
 #[inline(always)]
 #[must_use]
-pub(crate) const fn rsqrt_unit_with_mantissa(s: u64) -> (u32, u32, u32) {
+pub(crate) const fn rsqrt_unit_in_line(s: u64) -> (u32, u32, u32) {
     // 0 has no reciprocal root, and no bit for the table to be indexed by.
     debug_assert!(s >= 1, "rsqrt: zero argument");
     // s < 2^p with p even, and s ≥ 2^(p−2).
@@ -262,10 +256,10 @@ mod tests {
         // powers of two it is scaled by), and random arguments across the whole range.
         let error = |s: u64| {
             let (y, shift) = rsqrt_unit(s);
-            // The in-line form with its mantissa gives the same root, and the mantissa is
-            // `s`'s top word at the root's bit length.
+            // The in-line form gives the same root, and its mantissa is `s`'s top word at the
+            // root's bit length.
             assert_eq!(
-                rsqrt_unit_with_mantissa(s),
+                rsqrt_unit_in_line(s),
                 (y, shift, top_word(s, 2 * shift)),
                 "{s}"
             );

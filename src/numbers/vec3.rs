@@ -420,7 +420,8 @@ const fn unit_scale<const IN_LINE: bool>(square: u64) -> Option<(u32, u32)> {
     }
     // 1/‖self‖ in units of 2⁻¹⁶ is y · 2⁻⁽³⁰⁺ˢʰⁱᶠᵗ⁾ · 2¹⁶.
     let (y, shift) = if IN_LINE && !fx::NO_LONG_MULTIPLY {
-        rsqrt_unit_in_line(square)
+        let (y, shift, _) = rsqrt_unit_in_line(square);
+        (y, shift)
     } else {
         rsqrt_unit(square)
     };
