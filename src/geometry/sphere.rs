@@ -290,7 +290,15 @@ impl Sphere {
     /// The outward unit normal `(x − c) / r` at a point `x` on the surface, as a
     /// multiplication by the reciprocal radius kept since construction.
     pub(crate) fn outward_normal(&self, x: Vec3) -> Vec3 {
+        // A point near the surface lies within the radius and a little of the centre: no
+        // saturation to check.
+        let v = x.minus(self.centre);
         let shift = FRAC - 1 + self.inv_shift; // (v·2^(31+k)/r) / 2^(15+k) = v·2¹⁶/r
+        let (v, shift) = if !fx::NO_LONG_MULTIPLY && shift < 33 {
+            (lifted(v, self.inv_shift), 33)
+        } else {
+            (v, shift)
+        };
         let scale = |c: Fx| {
             let q = fx::mul_shift_round(c.to_bits(), self.inv_radius, shift);
             // A point within rounding of the surface gives |q| ≤ 2¹⁶ plus a few units, and a
@@ -303,11 +311,22 @@ impl Sphere {
             );
             Fx::from_bits((q as i32).clamp(-(1 << FRAC), 1 << FRAC))
         };
-        // A point near the surface lies within the radius and a little of the centre: no
-        // saturation to check.
-        let v = x.minus(self.centre);
         Vec3::new(scale(v.x), scale(v.y), scale(v.z))
     }
+}
+
+/// The difference `v` from the centre of a sphere of radius below 4 (`k ≤ 17`, a shift of
+/// 32 or less, where the rounding would take the product's low word too), moved up by
+/// `18 − k` bits: divided by `2³³` it gives the same quotient, exactly, from the product's
+/// high word alone, one instruction where a 64-bit product is one. A component beyond
+/// `2^(k+2)`, more than twice the radius, is held at ±1 either way; held at `2^(k+2)` first,
+/// it fits 32 bits once moved (2²⁰). Not on the Cortex-M0: there the high word takes as many
+/// 16-bit products and carries as the whole product, and the plain quotient stays.
+#[inline(always)]
+fn lifted(v: Vec3, k: u32) -> Vec3 {
+    let bound = 1i32 << (k + 2);
+    let lift = |c: Fx| Fx::from_bits(c.to_bits().max(-bound).min(bound) << (18 - k));
+    Vec3::new(lift(v.x), lift(v.y), lift(v.z))
 }
 
 /// `d²`, the squared distance from the centre of the point `t_close` along `ray`, whose
@@ -524,5 +543,34 @@ mod tests {
                 max: LIMIT,
             })
         );
+    }
+
+    #[test]
+    fn a_lifted_difference_gives_the_normal_components_of_the_plain_quotient() {
+        // Every radius below 4 (k ≤ 17) at both ends of its octave and between, and
+        // components from 0 to the ends of i32: the lifted quotient, held at ±1, is the
+        // plain one. Fails with the lift or the shift one off, or the bound at 2^k.
+        let mut random = crate::xorshift::XorShift(0x9E37_79B9_7F4A_7C15);
+        let held = |q: i64| q.clamp(-(1 << FRAC), 1 << FRAC);
+        for k in 0..18u32 {
+            let octave = [1i32 << k, (1 << k) + 1, (3 << k) / 2, (2 << k) - 1];
+            for r in octave.into_iter().filter(|r| r >> k == 1) {
+                let sphere = Sphere::from_fx(Vec3::ZERO, Fx::from_bits(r)).unwrap();
+                assert_eq!(sphere.inv_shift, k);
+                let (inv, shift) = (sphere.inv_radius, FRAC - 1 + sphere.inv_shift);
+                let edges = [0, 1, r - 1, r, r + 1, 2 * r, i32::MAX, i32::MIN + 1];
+                let draws = (0..4000).map(|_| (random.next() as i32) >> (random.next() % 32));
+                for c in edges.into_iter().chain(edges.map(|c| -c)).chain(draws) {
+                    let c = c.max(-i32::MAX);
+                    let v = Vec3::new(Fx::from_bits(c), Fx::ZERO, Fx::ZERO);
+                    let lifted = lifted(v, sphere.inv_shift);
+                    assert_eq!(
+                        held(fx::mul_shift_round(lifted.x.to_bits(), inv, 33)),
+                        held(fx::mul_shift_round(c, inv, shift)),
+                        "radius {r} raw, component {c}"
+                    );
+                }
+            }
+        }
     }
 }
