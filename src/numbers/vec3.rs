@@ -430,8 +430,21 @@ const fn unit_scale<const IN_LINE: bool>(square: u64) -> Option<(u32, u32)> {
 
 /// The unit vector's component along `c` (a component of `v`), from [`unit_scale`]'s
 /// factor: `|c| ≤ ‖v‖` and `y·‖v‖ ≈ 2^(30 + shift − 14)`, so it is at most 2¹⁶ and a bit.
+///
+/// A vector shorter than 4 (a direction towards a pixel, most often) has a shift of 32 or
+/// less, where the rounding would take the product's low word too. Where a 64-bit product is
+/// one instruction, `c` is moved up to a shift of 33 instead, the same quotient exactly from
+/// the product's high word alone: `|c| < 2^(shift − 14)`, so moved up by `33 − shift` bits it
+/// stays below 2¹⁹. Not on the Cortex-M0, whose high word costs as much as the whole product
+/// there (`fx::mul_shift_round`).
 #[inline]
 const fn unit_part(c: Fx, y: u32, shift: u32) -> Fx {
+    // Its own call with the shift a constant, which the rounding is folded with: a shift
+    // chosen between the two would be a variable again.
+    if !fx::NO_LONG_MULTIPLY && shift < 33 {
+        let moved = c.to_bits() << (33 - shift);
+        return Fx::from_bits(fx::mul_shift_round(moved, y as i32, 33) as i32);
+    }
     Fx::from_bits(fx::mul_shift_round(c.to_bits(), y as i32, shift) as i32)
 }
 
@@ -670,6 +683,38 @@ mod tests {
                 assert_eq!(Vec3::unit_component_in_line(c, square), u, "{v:?}");
             }
         }
+    }
+
+    #[test]
+    fn a_unit_part_moved_up_to_a_shift_of_33_is_the_plain_quotient() {
+        // Vectors of every length from a raw unit to 2³ (shifts 15 to 33), their components
+        // of either sign and at the length itself: the unit part is the quotient of the
+        // plain shift. Fails with a component moved a bit too far or not far enough.
+        let mut rng = crate::xorshift::XorShift(0x5eed_0fc0_ffee_0001);
+        let mut moved = 0;
+        for i in 0..200_000u32 {
+            let mut next = |bits: u32| ((rng.next() as i64) >> (64 - bits)) as i32;
+            let v = match i % 5 {
+                0 => Vec3::new(Fx::from_bits(next(20) >> (i % 19)), Fx::ZERO, Fx::ZERO),
+                _ => Vec3::new(
+                    Fx::from_bits(next(20) >> (i % 19)),
+                    Fx::from_bits(next(20) >> (i % 13)),
+                    Fx::from_bits(next(20) >> (i % 7)),
+                ),
+            };
+            let Some((y, shift)) = unit_scale::<false>(v.length_squared_wide()) else {
+                continue;
+            };
+            moved += u32::from(shift < 33);
+            for c in [v.x, v.y, v.z] {
+                let plain = fx::mul_shift_round(c.to_bits(), y as i32, shift) as i32;
+                assert_eq!(unit_part(c, y, shift).to_bits(), plain, "{v:?}");
+            }
+        }
+        assert!(
+            moved > 100_000,
+            "only {moved} vectors with a shift below 33"
+        );
     }
 
     #[test]
