@@ -431,12 +431,13 @@ const fn unit_scale<const IN_LINE: bool>(square: u64) -> Option<(u32, u32)> {
 /// The unit vector's component along `c` (a component of `v`), from [`unit_scale`]'s
 /// factor: `|c| ≤ ‖v‖` and `y·‖v‖ ≈ 2^(30 + shift − 14)`, so it is at most 2¹⁶ and a bit.
 ///
-/// A vector shorter than 4 (a direction towards a pixel, most often) has a shift of 32 or
-/// less, where the rounding would take the product's low word too. Where a 64-bit product is
-/// one instruction, `c` is moved up to a shift of 33 instead, the same quotient exactly from
-/// the product's high word alone: `|c| < 2^(shift − 14)`, so moved up by `33 − shift` bits it
-/// stays below 2¹⁹. Not on the Cortex-M0, whose high word costs as much as the whole product
-/// there (`fx::mul_shift_round`).
+/// A vector shorter than 4 (a sum of unit vectors, as a highlight's half vector is, or a
+/// mirrored or refracted direction) has a shift of 32 or less, where the rounding would take
+/// the product's low word too. Where a 64-bit product is one instruction, `c` is moved up to
+/// a shift of 33 instead, the same quotient exactly from the product's high word alone:
+/// `|c| < 2^(shift − 14)`, so moved up by `33 − shift` bits it stays below 2¹⁹. Not on the
+/// Cortex-M0, whose high word costs as much as the whole product there
+/// (`fx::mul_shift_round`).
 #[inline]
 const fn unit_part(c: Fx, y: u32, shift: u32) -> Fx {
     // Its own call with the shift a constant, which the rounding is folded with: a shift
