@@ -284,3 +284,39 @@ fn spheres_on_and_through_planes_equal_their_pixels_traced_one_by_one() {
         }
     }
 }
+
+#[test]
+fn spheres_whose_fronts_meet_equal_their_pixels_traced_one_by_one() {
+    // Pairs of balls whose near sides touch or nearly touch on the line of sight through
+    // their centres, one of them flatter: about that line each is the nearer on one side,
+    // by less than the rounding of a hit, and the nearest found so far may leave the other
+    // only where none of its hits can be nearer. Either ball first, and nudged by a few
+    // units of 2⁻¹⁶ either way.
+    use fixray::{Background, Camera, Light, Scene, Sphere};
+    let camera = Camera::look_at([0.0, 0.0, 0.0], [0.0, 0.0, -10.0])
+        .fov_degrees(20.0)
+        .size(Size::new(96, 64))
+        .build()
+        .unwrap();
+    for nudge in [-3.0, 0.0, 1.0, 5.0] {
+        let far = -12.0 + nudge / 65536.0;
+        let balls = [
+            Sphere::new([0.0, 0.0, -10.0], 2.0).unwrap(),
+            Sphere::new([0.0, 0.0, far], 4.0).unwrap(),
+            Sphere::new([0.3, -0.2, far - 0.5], 4.5).unwrap(),
+        ];
+        for order in [[0, 1, 2], [2, 1, 0], [1, 0, 2]] {
+            let mut scene: Scene<4> = Scene::new(
+                Light::new([-6.0, 8.0, 4.0], 0.9).unwrap(),
+                0.1,
+                Background::plain(Rgb::new(20, 30, 40)),
+            )
+            .unwrap();
+            for (k, i) in order.into_iter().enumerate() {
+                let colour = Rgb::new(60 + 60 * k as u8, 200 - 50 * k as u8, 90);
+                scene.add_sphere(balls[i], colour).unwrap();
+            }
+            rows_match_tracing_each_pixel(&scene, &camera);
+        }
+    }
+}

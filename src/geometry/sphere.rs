@@ -169,13 +169,24 @@ impl Sphere {
     // whose flash the firmware is held to, one copy.
     #[cfg_attr(all(target_arch = "arm", target_has_atomic = "32"), inline(always))]
     pub(crate) fn hit_distance(&self, ray: &Ray) -> Option<Fx> {
+        self.hit_distance_within(ray, FAR)
+    }
+
+    /// [`Sphere::hit_distance`] where it is at most `bound` (at most [`FAR`]) away, `None`
+    /// where every hit would lie beyond: a hit is never nearer than `t_close − r`, since the
+    /// root `a` of at most `r²` is at most `r`, so past `t_close − r > bound` nothing is left
+    /// to find. With `bound` the nearest hit found so far, a sphere behind it is left after
+    /// one dot product.
+    #[cfg_attr(all(target_arch = "arm", target_has_atomic = "32"), inline(always))]
+    pub(crate) fn hit_distance_within(&self, ray: &Ray, bound: Fx) -> Option<Fx> {
+        debug_assert!(bound <= FAR, "hit_distance_within: a bound past FAR");
         let to_centre = self.centre.minus(ray.origin);
         let t_close = ray.dir.dot_exact(to_centre);
         if t_close < -self.radius {
             return None; // wholly behind the origin
         }
-        if t_close > FAR + self.radius {
-            return None; // every hit would lie beyond t_close − r > FAR
+        if t_close - self.radius > bound {
+            return None; // every hit would lie beyond t_close − r > bound
         }
         let d2 = closest_squared(ray, to_centre, t_close);
         let r2 = self.radius_squared();
@@ -410,6 +421,64 @@ mod tests {
         assert!(
             cases > 150_000 && blocked > 20_000,
             "{cases} cases, {blocked} blocked"
+        );
+    }
+
+    #[test]
+    fn a_sphere_is_left_within_a_bound_only_where_its_hit_lies_beyond() {
+        // Random balls and rays, from far off, near the surface and inside, against bounds at
+        // and about the hit, the closest approach and the near side: within a bound, the test
+        // gives the hit `hit_distance` gives, or nothing where that hit is farther than the
+        // bound. Fails with the near side taken as `t_close`, or as `t_close − r` less a unit.
+        let mut rng = crate::xorshift::XorShift(0x0b0d_5eed_0000_0013);
+        let mut next = |range: f32| rng.signed(range);
+        let (mut left, mut found) = (0u32, 0u32);
+        for case in 0..20_000 {
+            let r = 0.05 + next(1.0).abs() * 30.0;
+            let centre = [next(200.0), next(200.0), next(200.0)];
+            let ball = Sphere::new(centre, r).unwrap();
+            let reach = [r * 0.5, r * 1.001, r * 3.0, 400.0][case % 4];
+            let mut near = |spread: f32| {
+                let [x, y, z] = centre.map(|c| Fx::from_num(c + next(spread)));
+                Vec3::new(x, y, z)
+            };
+            let origin = near(reach);
+            let aim = near(r * 1.5);
+            let Ok(ray) = Ray::new(origin, aim - origin) else {
+                continue;
+            };
+            let t_close = ray.dir.dot_exact(ball.centre - origin);
+            let hit = ball.hit_distance(&ray);
+            let around = |t: Fx| [t - Fx::DELTA, t, t + Fx::DELTA];
+            let [a, b, c] = [hit.unwrap_or(FAR), t_close, t_close - ball.radius].map(around);
+            let ends = [Fx::ZERO, FAR, Fx::from_num(next(200.0).abs())];
+            for bound in ends.into_iter().chain(a).chain(b).chain(c) {
+                let bound = bound.clamp(-FAR, FAR);
+                let within = ball.hit_distance_within(&ray, bound);
+                match (within, hit) {
+                    (Some(t), _) => assert_eq!(Some(t), hit, "case {case}: {ball:?}, {ray:?}"),
+                    (None, Some(t)) => {
+                        assert!(t > bound, "case {case}: {ball:?}, {ray:?}, bound {bound}");
+                        left += 1;
+                    }
+                    (None, None) => {}
+                }
+                found += u32::from(within.is_some());
+            }
+        }
+        assert!(
+            left > 10_000 && found > 20_000,
+            "{left} left, {found} found"
+        );
+        // Through the centre the hit is the near side itself, `t_close − r`: a bound there
+        // is not beyond it, and the hit is found (a nearest hit found so far at the same
+        // distance may still lose the tie to a lower index).
+        let through = ray(Vec3::ZERO, -Vec3::Z);
+        let eight = Fx::from_num(8);
+        assert_eq!(ball().hit_distance_within(&through, eight), Some(eight));
+        assert_eq!(
+            ball().hit_distance_within(&through, eight - Fx::DELTA),
+            None
         );
     }
 

@@ -7,7 +7,7 @@ use crate::geometry::ray::Ray;
 use crate::geometry::shape::Shape;
 use crate::geometry::sphere::Sphere;
 use crate::numbers::bits;
-use crate::numbers::fx::Fx;
+use crate::numbers::fx::{FAR, Fx};
 use crate::numbers::isqrt::isqrt_once;
 use crate::numbers::vec3::Vec3;
 use crate::scene::hit::SceneHit;
@@ -62,7 +62,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     #[doc(hidden)]
     #[must_use]
     pub fn shoot_among(&self, ray: &Ray, among: u64) -> Option<SceneHit> {
-        self.nearest_among(ray, [among, 0], 0, |_, shape| shape.meet(ray))
+        self.nearest_among(ray, [among, 0], 0, |_, shape, _| shape.meet(ray))
     }
 
     /// [`Scene::shoot_among`] for a ray from `eye.origin()`, with what all such rays share
@@ -70,7 +70,8 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     ///
     /// The spheres are tried before the planes: a hit on a sphere that lies wholly before
     /// every plane ([`Eye`]'s `before_planes`) is nearer than any plane's, and then the planes
-    /// need no test.
+    /// need no test. A sphere whose near side lies beyond the nearest hit found so far takes
+    /// one dot product ([`Sphere::hit_distance_within`]).
     // In line on the Armv7-M cores; out of line on ARMv6-M and RV32, within the flash the
     // firmware is held to.
     #[cfg_attr(
@@ -83,13 +84,21 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     )]
     pub(crate) fn shoot_from_eye(&self, ray: &Ray, among: u64, eye: &Eye<N>) -> Option<SceneHit> {
         let order = [among & !eye.planes, among & eye.planes];
-        self.nearest_among(ray, order, eye.before_planes, |index, shape| match shape {
-            Shape::Plane(plane) => {
-                let hit = plane.hit_from(ray, eye.numerator(index))?;
-                Some((hit.t, Some(hit)))
-            }
-            Shape::Sphere(sphere) => Some((sphere.hit_distance(ray)?, None)),
-        })
+        self.nearest_among(
+            ray,
+            order,
+            eye.before_planes,
+            |index, shape, best| match shape {
+                Shape::Plane(plane) => {
+                    let hit = plane.hit_from(ray, eye.numerator(index))?;
+                    Some((hit.t, Some(hit)))
+                }
+                // A sphere whose every hit lies beyond the nearest found cannot be nearer.
+                Shape::Sphere(sphere) => {
+                    Some((sphere.hit_distance_within(ray, best.min(FAR))?, None))
+                }
+            },
+        )
     }
 
     /// [`Scene::shoot_from_eye`] for a set of one object, `index`: its hit, if any.
@@ -109,21 +118,23 @@ impl<const N: usize, const L: usize> Scene<N, L> {
 
     /// The nearest hit among the objects of `first`, then of `then` unless the nearest of
     /// `first` is one of `enough` (bit `i` for object `i`; objects past the 64th are always
-    /// tried, last), with `distance(index, shape)` giving each one's `t`, and its whole hit
-    /// where that came at no extra cost (a plane's point is found before its distance). Ties
-    /// go to the lower index, whatever the order (see [`Scene::shoot_among`]).
+    /// tried, last), with `distance(index, shape, best)` giving each one's `t`, and its whole
+    /// hit where that came at no extra cost (a plane's point is found before its distance).
+    /// `best` is the nearest `t` found so far (`Fx::MAX` before any): a shape none of whose
+    /// hits can be as near may come back `None`. Ties go to the lower index, whatever the
+    /// order (see [`Scene::shoot_among`]).
     #[inline]
     fn nearest_among(
         &self,
         ray: &Ray,
         [first, then]: [u64; 2],
         enough: u64,
-        distance: impl Fn(usize, &Shape) -> Option<(Fx, Option<Hit>)>,
+        distance: impl Fn(usize, &Shape, Fx) -> Option<(Fx, Option<Hit>)>,
     ) -> Option<SceneHit> {
         // Hits lie within FAR, so any hit is nearer than MAX.
         let (mut best, mut nearest, mut known) = (Fx::MAX, usize::MAX, None);
         let mut try_object = |index: usize, object: &Object, nearest: &mut usize| {
-            if let Some((t, hit)) = distance(index, &object.shape)
+            if let Some((t, hit)) = distance(index, &object.shape, best)
                 && (t < best || (t == best && index < *nearest))
             {
                 (best, *nearest, known) = (t, index, hit);
