@@ -90,9 +90,9 @@
 //!
 //! | chip | [`Viewport::render`], one-row buffer | `picture::<Rgb565, 160>()?.draw` |
 //! | --- | ---: | ---: |
-//! | Cortex-M0 (`thumbv6m-none-eabi`) | 2 896 / 3 524 | 3 392 / 4 020 |
-//! | Cortex-M3 (`thumbv7m-none-eabi`) | 2 472 / 3 040 | 2 976 / 3 544 |
-//! | Cortex-M4F (`thumbv7em-none-eabihf`) | 2 512 / 3 076 | 3 016 / 3 580 |
+//! | Cortex-M0 (`thumbv6m-none-eabi`) | 2 888 / 3 516 | 3 384 / 4 012 |
+//! | Cortex-M3 (`thumbv7m-none-eabi`) | 2 480 / 3 048 | 2 984 / 3 552 |
+//! | Cortex-M4F (`thumbv7em-none-eabihf`) | 2 504 / 3 068 | 3 008 / 3 572 |
 //! | RV32IMC (`riscv32imc-unknown-none-elf`) | 1 996 / 2 812 | 2 492 / 3 308 |
 //!
 //! The classic scene, with mirrors, glass, highlights and three lights' shadows, takes the
