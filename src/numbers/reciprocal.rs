@@ -247,6 +247,23 @@ mod tests {
     }
 
     #[test]
+    fn the_knots_by_byte_are_the_knots() {
+        // Both ways to the knots, the Cortex-M0's and the others', for every top byte a
+        // mantissa of `μ ∈ [¼, 1)` has.
+        for byte in 64..256 {
+            let j = byte - 64;
+            let knots = (RSQRT_KNOTS[j], RSQRT_KNOTS[j + 1], RSQRT_KNOTS[j + 2]);
+            let by_byte = (
+                RSQRT_BY_BYTE[byte],
+                RSQRT_BY_BYTE[byte + 1],
+                RSQRT_BY_BYTE[byte + 2],
+            );
+            assert_eq!(by_byte, knots, "top byte {byte}");
+            assert_eq!(knots_from(byte), knots, "top byte {byte}");
+        }
+    }
+
+    #[test]
     fn accurate_to_two_to_the_minus_27_everywhere() {
         let mut s: u64 = 1;
         let mut worst: f64 = 0.0;
