@@ -429,7 +429,8 @@ mod tests {
         // Random balls and rays, from far off, near the surface and inside, against bounds at
         // and about the hit, the closest approach and the near side: within a bound, the test
         // gives the hit `hit_distance` gives, or nothing where that hit is farther than the
-        // bound. Fails with the near side taken as `t_close`, or as `t_close − r` less a unit.
+        // bound. Fails with the near side taken as `t_close`; taken a unit lower it is still
+        // right but leaves a third as many spheres early, and the count fails.
         let mut rng = crate::xorshift::XorShift(0x0b0d_5eed_0000_0013);
         let mut next = |range: f32| rng.signed(range);
         let (mut left, mut found) = (0u32, 0u32);
@@ -618,7 +619,7 @@ mod tests {
     fn a_lifted_difference_gives_the_normal_components_of_the_plain_quotient() {
         // Every radius below 4 (k ≤ 17) at both ends of its octave and between, and
         // components from 0 to the ends of i32: the lifted quotient, held at ±1, is the
-        // plain one. Fails with the lift or the shift one off, or the bound at 2^k.
+        // plain one. Fails with the lift one off or the bound at 2^k.
         let mut random = crate::xorshift::XorShift(0x9E37_79B9_7F4A_7C15);
         let held = |q: i64| q.clamp(-(1 << FRAC), 1 << FRAC);
         for k in 0..18u32 {
