@@ -177,6 +177,7 @@ impl Sphere {
     /// root `a` of at most `r²` is at most `r`, so past `t_close − r > bound` nothing is left
     /// to find. With `bound` the nearest hit found so far, a sphere behind it is left after
     /// one dot product.
+    // Compiled as `hit_distance` is, for the same reason.
     #[cfg_attr(all(target_arch = "arm", target_has_atomic = "32"), inline(always))]
     pub(crate) fn hit_distance_within(&self, ray: &Ray, bound: Fx) -> Option<Fx> {
         debug_assert!(bound <= FAR, "hit_distance_within: a bound past FAR");
@@ -363,6 +364,26 @@ mod tests {
         Ray::new(o, d).unwrap()
     }
 
+    /// A random ball (radius 0.05 to 30, centre within ±200) and a ray at it from far off,
+    /// from near its surface or from inside (by `case`), aimed within 1.5 radii of its centre;
+    /// `None` where the ray's direction came out zero.
+    fn random_ball_and_ray(
+        rng: &mut crate::xorshift::XorShift,
+        case: usize,
+    ) -> Option<(Sphere, Ray)> {
+        let r = 0.05 + rng.signed(1.0).abs() * 30.0;
+        let centre = [rng.signed(200.0), rng.signed(200.0), rng.signed(200.0)];
+        let ball = Sphere::new(centre, r).unwrap();
+        let reach = [r * 0.5, r * 1.001, r * 3.0, 400.0][case % 4];
+        let mut near = |spread: f32| {
+            let [x, y, z] = centre.map(|c| Fx::from_num(c + rng.signed(spread)));
+            Vec3::new(x, y, z)
+        };
+        let origin = near(reach);
+        let aim = near(r * 1.5);
+        Some((ball, Ray::new(origin, aim - origin).ok()?))
+    }
+
     #[test]
     fn origin_inside_leaves_through_the_far_side() {
         let hit = ball()
@@ -378,22 +399,12 @@ mod tests {
         // squared distances at and about the hit's own, the closest approach's and the near
         // side's: `blocks` must give the answer `hit_distance` gives, everywhere.
         let mut rng = crate::xorshift::XorShift(0xb10c_5ed0_5eed_0001);
-        let mut next = |range: f32| rng.signed(range);
         let (mut cases, mut blocked) = (0u32, 0u32);
         for case in 0..20_000 {
-            let r = 0.05 + next(1.0).abs() * 30.0;
-            let centre = [next(200.0), next(200.0), next(200.0)];
-            let ball = Sphere::new(centre, r).unwrap();
-            let reach = [r * 0.5, r * 1.001, r * 3.0, 400.0][case % 4];
-            let mut near = |spread: f32| {
-                let [x, y, z] = centre.map(|c| Fx::from_num(c + next(spread)));
-                Vec3::new(x, y, z)
-            };
-            let origin = near(reach);
-            let aim = near(r * 1.5);
-            let Ok(ray) = Ray::new(origin, aim - origin) else {
+            let Some((ball, ray)) = random_ball_and_ray(&mut rng, case) else {
                 continue;
             };
+            let origin = ray.origin;
             let square = |t: Fx| {
                 let t = t.to_bits().max(0) as u64;
                 t * t
@@ -405,7 +416,7 @@ mod tests {
                 let t2 = t.map_or(0, square);
                 [t2.saturating_sub(1), t2, t2 + 1]
             };
-            let ends = [0, 1, u64::MAX, (next(1.0).abs() * 1e15) as u64];
+            let ends = [0, 1, u64::MAX, (rng.signed(1.0).abs() * 1e15) as u64];
             let [a, b, c] = [hit, Some(t_close), Some(t_close - ball.radius)].map(around);
             for limit in ends.into_iter().chain(a).chain(b).chain(c) {
                 let expected = hit.is_some_and(|t| square(t) < limit);
@@ -432,27 +443,17 @@ mod tests {
         // bound. Fails with the near side taken as `t_close`; taken a unit lower it is still
         // right but leaves a third as many spheres early, and the count fails.
         let mut rng = crate::xorshift::XorShift(0x0b0d_5eed_0000_0013);
-        let mut next = |range: f32| rng.signed(range);
         let (mut left, mut found) = (0u32, 0u32);
         for case in 0..20_000 {
-            let r = 0.05 + next(1.0).abs() * 30.0;
-            let centre = [next(200.0), next(200.0), next(200.0)];
-            let ball = Sphere::new(centre, r).unwrap();
-            let reach = [r * 0.5, r * 1.001, r * 3.0, 400.0][case % 4];
-            let mut near = |spread: f32| {
-                let [x, y, z] = centre.map(|c| Fx::from_num(c + next(spread)));
-                Vec3::new(x, y, z)
-            };
-            let origin = near(reach);
-            let aim = near(r * 1.5);
-            let Ok(ray) = Ray::new(origin, aim - origin) else {
+            let Some((ball, ray)) = random_ball_and_ray(&mut rng, case) else {
                 continue;
             };
+            let origin = ray.origin;
             let t_close = ray.dir.dot_exact(ball.centre - origin);
             let hit = ball.hit_distance(&ray);
             let around = |t: Fx| [t - Fx::DELTA, t, t + Fx::DELTA];
             let [a, b, c] = [hit.unwrap_or(FAR), t_close, t_close - ball.radius].map(around);
-            let ends = [Fx::ZERO, FAR, Fx::from_num(next(200.0).abs())];
+            let ends = [Fx::ZERO, FAR, Fx::from_num(rng.signed(200.0).abs())];
             for bound in ends.into_iter().chain(a).chain(b).chain(c) {
                 let bound = bound.clamp(-FAR, FAR);
                 let within = ball.hit_distance_within(&ray, bound);
