@@ -25,24 +25,35 @@ pub const fn isqrt(x: u64) -> u64 {
     if x < 2 {
         return x;
     }
-    // The root is below 2³², and so, once clamped there, is the estimate: its square is one
-    // 32 × 32 product, and each whole step moves it by `2r + 1` without another.
+    // The root is below 2³², and so, once clamped there, is the estimate.
     let estimate = estimate(x);
     let mut r = if estimate > u32::MAX as u64 {
         u32::MAX
     } else {
         estimate as u32
     };
-    let mut square = wide_mul_u32(r, r);
-    while square > x {
+    // The whole steps go by the residual `x − r²`: `(r + 1)² ≤ x` is `x − r² ≥ 2r + 1`, and
+    // a step moves it by `2r + 1`. The estimate is within 8 of the root, so the residual is
+    // far inside an `i64`; below 2⁴⁴ (every sphere test's root) the root is below 2²², the
+    // estimate within 4 of it, and the residual within about ±2²⁶: there it is taken from the
+    // low words of `x` and `r²` alone, exact modulo 2³², with no 64-bit square, a long
+    // sequence on the Cortex-M0. At `r = 2³² − 1` the residual is below `2r + 1`, so `r`
+    // never steps past it.
+    debug_assert!(
+        r.abs_diff(x.isqrt() as u32) <= 1 << 8,
+        "isqrt: the estimate is far from the root"
+    );
+    let mut residual = if x < 1 << 44 {
+        (x as u32).wrapping_sub(r.wrapping_mul(r)) as i32 as i64
+    } else {
+        x.wrapping_sub(wide_mul_u32(r, r)) as i64
+    };
+    while residual < 0 {
         r -= 1; // r² > x ≥ 2: r is at least 2
-        square -= 2 * r as u64 + 1; // (r + 1)² − r²
+        residual += 2 * r as i64 + 1; // (r + 1)² − r²
     }
-    // Below 2³² − 1, (r + 1)² fits 64 bits. Written as the step it is: the `r² + 2r < x`
-    // clippy prefers compiles longer on the Cortex-M0.
-    #[allow(clippy::int_plus_one)]
-    while r < u32::MAX && square + 2 * r as u64 + 1 <= x {
-        square += 2 * r as u64 + 1;
+    while residual >= 2 * r as i64 + 1 {
+        residual -= 2 * r as i64 + 1;
         r += 1;
     }
     r as u64
@@ -126,6 +137,21 @@ mod tests {
         }
         assert!(worst_low <= 4, "{worst_low} steps below 2⁴⁴");
         assert!(worst_high <= 8, "{worst_high} steps from 2⁴⁴ up");
+    }
+
+    #[test]
+    fn every_neighbour_of_a_square_below_and_about_two_to_the_44() {
+        // Below 2⁴⁴ the whole steps go by a residual from the low words alone: every root up
+        // to 2²² at both ends of its interval, `r²` and `r² + 2r`, and their neighbours, where
+        // a step taken one short or one too far shows; then both sides of 2⁴⁴ itself.
+        for r in 1u64..=1 << 22 {
+            for x in [r * r - 1, r * r, r * r + 2 * r, r * r + 2 * r + 1] {
+                assert!(is_floor_sqrt(x, isqrt(x)), "isqrt({x}) = {}", isqrt(x));
+            }
+        }
+        for x in ((1u64 << 44) - 1000)..((1 << 44) + 1000) {
+            assert!(is_floor_sqrt(x, isqrt(x)), "isqrt({x}) = {}", isqrt(x));
+        }
     }
 
     #[test]
