@@ -230,6 +230,45 @@ pub(crate) const fn top_word(x: u64, p: u32) -> u32 {
     }
 }
 
+/// `(top_word(x, p), p / 2)` for `x ≥ 1` and `p` its bit length rounded up to even
+/// (`2^(p−2) ≤ x < 2^p`): the mantissa of a reciprocal square root's argument, and half its
+/// exponent.
+///
+/// Found from the word that holds the leading bit: its `n` leading zeros (of 64) move `x`'s
+/// leading bit to the top of the word, and one more shift down where `n` is odd makes the
+/// length even. Two cases, against `top_word`'s three after the bit length. On the
+/// Cortex-M0, whose reciprocal root is one copy in its flash, it is the bit length and
+/// `top_word`, which measured shorter there.
+#[inline]
+#[must_use]
+pub(crate) const fn even_top_word(x: u64) -> (u32, u32) {
+    debug_assert!(x >= 1, "even_top_word: zero");
+    if NO_LONG_MULTIPLY {
+        let p = (bit_length(x) + 1) & !1;
+        return (top_word(x, p), p / 2);
+    }
+    let (high, low) = ((x >> 32) as u32, x as u32);
+    let (top, n) = if high != 0 {
+        let n = leading_zeros_u32(high);
+        // `low >> (32 − n)` in two shifts, each below 32 for every n in 0..=31.
+        ((high << n) | ((low >> 1) >> (31 - n)), n)
+    } else {
+        let n = leading_zeros_u32(low);
+        (low << n, 32 + n)
+    };
+    (top >> (n & 1), 32 - (n >> 1))
+}
+
+/// `x.leading_zeros()`, from [`bit_length_u32`] where there is no instruction for it.
+#[inline]
+const fn leading_zeros_u32(x: u32) -> u32 {
+    if NO_CLZ {
+        32 - bit_length_u32(x)
+    } else {
+        x.leading_zeros()
+    }
+}
+
 /// The number of bits `x` needs, `64 − x.leading_zeros()` (0 for 0).
 ///
 /// Cortex-M0 and RV32IMC have no count-leading-zeros instruction, and the library call that
@@ -498,6 +537,24 @@ mod tests {
         for (a, b) in pairs.chain(random) {
             let exact = ((a as i64 * b as i64 + (1 << 15)) >> 16) as i32;
             assert_eq!(split_mul_fits(a, b), exact, "{a} × {b}");
+        }
+    }
+
+    #[test]
+    fn the_even_top_word_is_the_top_word_at_the_even_bit_length() {
+        // Every bit length, odd and even, each end of it, and random values between; with the
+        // leading bit in either word and at every place in it.
+        let mut rng = crate::xorshift::XorShift(0x2545_f491_4f6c_dd1d);
+        for bits in 1..=64u32 {
+            let (low, high) = (1u64 << (bits - 1), u64::MAX >> (64 - bits));
+            let random = (0..2_000).map(|_| low | (rng.next() & (high >> 1)));
+            for x in [low, high, low + 1].into_iter().chain(random) {
+                // The plain reading: x·2^(32 − p), truncated, in 128 bits.
+                let p = bits + (bits & 1);
+                let plain = ((x as u128) << 64 >> (32 + p)) as u32;
+                assert_eq!(even_top_word(x), (plain, p / 2), "{x:#x}");
+                assert_eq!(top_word(x, p), plain, "{x:#x}");
+            }
         }
     }
 

@@ -112,10 +112,8 @@ pub(crate) const fn rsqrt_unit(s: u64) -> (u32, u32) {
 pub(crate) const fn rsqrt_unit_in_line(s: u64) -> (u32, u32, u32) {
     // 0 has no reciprocal root, and no bit for the table to be indexed by.
     debug_assert!(s >= 1, "rsqrt: zero argument");
-    // s < 2^p with p even, and s ≥ 2^(p−2).
-    let bits = bit_length(s);
-    let p = (bits + 1) & !1;
-    let m = top_word(s, p);
+    // μ = m · 2⁻³², s scaled by 2^(32 − p) with p even and s ≥ 2^(p−2); half = p / 2.
+    let (m, half) = fx::even_top_word(s);
     // Knot j below μ, and t, the next 16 bits, the way to knot j + 1 in units of 2⁻¹⁶.
     let t = (m >> 8) & 0xffff;
     let (k0, k1, k2) = knots_from((m >> 24) as usize);
@@ -124,7 +122,7 @@ pub(crate) const fn rsqrt_unit_in_line(s: u64) -> (u32, u32, u32) {
     // product fits 32 bits. The sums may wrap on the way, and come back exactly.
     let bend = k0.wrapping_add(k2).wrapping_sub(k1.wrapping_mul(2));
     let y = linear.wrapping_sub((((t * (65536 - t)) >> 17) * bend) >> 16);
-    (y, p / 2, m)
+    (y, half, m)
 }
 
 /// `1/√s` for `s ≥ 1`, as [`rsqrt_unit`], to about 2⁻²⁹: its seed and one Newton step
