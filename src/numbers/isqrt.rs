@@ -32,13 +32,13 @@ pub const fn isqrt(x: u64) -> u64 {
     } else {
         estimate as u32
     };
-    // The whole steps go by the residual `x − r²`: `(r + 1)² ≤ x` is `x − r² ≥ 2r + 1`, and
-    // a step moves it by `2r + 1`. The estimate is within 8 of the root, so the residual is
+    // The whole steps go by the residual `x − r²`: `(r + 1)² ≤ x` is `x − r² > 2r`, and a
+    // step moves it by `2r + 1`. The estimate is within 8 of the root, so the residual is
     // far inside an `i64`; below 2⁴⁴ (every sphere test's root) the root is below 2²², the
     // estimate within 4 of it, and the residual within about ±2²⁶: there it is taken from the
     // low words of `x` and `r²` alone, exact modulo 2³², with no 64-bit square, a long
-    // sequence on the Cortex-M0. At `r = 2³² − 1` the residual is below `2r + 1`, so `r`
-    // never steps past it.
+    // sequence on the Cortex-M0. At `r = 2³² − 1` the residual is at most `2r`, so `r` never
+    // steps past it.
     debug_assert!(
         r.abs_diff(x.isqrt() as u32) <= 1 << 8,
         "isqrt: the estimate is far from the root"
@@ -52,7 +52,7 @@ pub const fn isqrt(x: u64) -> u64 {
         r -= 1; // r² > x ≥ 2: r is at least 2
         residual += 2 * r as i64 + 1; // (r + 1)² − r²
     }
-    while residual >= 2 * r as i64 + 1 {
+    while residual > 2 * r as i64 {
         residual -= 2 * r as i64 + 1;
         r += 1;
     }
