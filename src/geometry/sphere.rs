@@ -164,10 +164,13 @@ impl Sphere {
 
     /// The `t` of [`Sphere::intersect`] alone, without the hit point and normal: what the
     /// scene needs to find the nearest object and to test shadow rays.
-    // In line on the Armv7-M cores (with `hit_at`): there the calls, and the hit handed back
-    // through memory, cost a sphere pixel more than its copies cost flash. On ARMv6-M and RV32,
+    // In line (with `hit_at`) on every chip but the Cortex-M0: the calls, and the hit handed
+    // back through memory, cost a sphere pixel more than its copies cost flash. On the M0,
     // whose flash the firmware is held to, one copy.
-    #[cfg_attr(all(target_arch = "arm", target_has_atomic = "32"), inline(always))]
+    #[cfg_attr(
+        not(all(target_arch = "arm", not(target_has_atomic = "32"))),
+        inline(always)
+    )]
     pub(crate) fn hit_distance(&self, ray: &Ray) -> Option<Fx> {
         self.hit_distance_within(ray, FAR)
     }
@@ -178,7 +181,10 @@ impl Sphere {
     /// to find. With `bound` the nearest hit found so far, a sphere behind it is left after
     /// one dot product.
     // Compiled as `hit_distance` is, for the same reason.
-    #[cfg_attr(all(target_arch = "arm", target_has_atomic = "32"), inline(always))]
+    #[cfg_attr(
+        not(all(target_arch = "arm", not(target_has_atomic = "32"))),
+        inline(always)
+    )]
     pub(crate) fn hit_distance_within(&self, ray: &Ray, bound: Fx) -> Option<Fx> {
         debug_assert!(bound <= FAR, "hit_distance_within: a bound past FAR");
         let to_centre = self.centre.minus(ray.origin);
@@ -292,8 +298,11 @@ impl Sphere {
     }
 
     /// The hit at distance `t` along `ray`: its point, and its normal facing the ray.
-    // In line on the Armv7-M cores, as `hit_distance` is.
-    #[cfg_attr(all(target_arch = "arm", target_has_atomic = "32"), inline(always))]
+    // In line but on the Cortex-M0, as `hit_distance` is.
+    #[cfg_attr(
+        not(all(target_arch = "arm", not(target_has_atomic = "32"))),
+        inline(always)
+    )]
     pub(crate) fn hit_at(&self, ray: &Ray, t: Fx) -> Hit {
         let point = ray.at_hit(t);
         Hit::facing(t, point, self.outward_normal(point), ray.dir)
