@@ -86,10 +86,10 @@ fn shadow_cones_never_skip_an_occluder() {
             };
             let ray = Ray::new_unchecked(point, l);
             let d2 = to_light.length_squared_wide();
-            let culled = scene.occluded(&ray, d2, usize::MAX, index, !0);
+            let culled = scene.occluded(ray.origin(), ray.dir(), d2, usize::MAX, index, !0);
             assert_eq!(
                 culled,
-                scene.occluded(&ray, d2, usize::MAX, usize::MAX, !0),
+                scene.occluded(ray.origin(), ray.dir(), d2, usize::MAX, usize::MAX, !0),
                 "{point:?} light {index}"
             );
             blocked += culled as u32;
@@ -175,9 +175,10 @@ fn only_objects_that_cannot_shadow_a_receiver_are_skipped() {
                     };
                     let ray = Ray::new_unchecked(point, l);
                     let d2 = to_light.length_squared_wide();
-                    let every = scene.occluded(&ray, d2, receiver, usize::MAX, !0);
+                    let every =
+                        scene.occluded(ray.origin(), ray.dir(), d2, receiver, usize::MAX, !0);
                     assert_eq!(
-                        scene.occluded(&ray, d2, receiver, light, !0),
+                        scene.occluded(ray.origin(), ray.dir(), d2, receiver, light, !0),
                         every,
                         "object {receiver} at {point:?}, light {light}"
                     );
