@@ -469,15 +469,34 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// back to 0..=255).
     #[inline(always)]
     pub(crate) fn matte_pixel(&self, material: &Material, diffuse: Fx, colour: Rgb) -> Rgb {
+        let mut pixel = Rgb::BLACK;
+        self.paint_matte(material, diffuse, colour, &mut pixel);
+        pixel
+    }
+
+    /// [`Scene::matte_pixel`], written into `pixel` a channel at a time: formed as one value
+    /// and then stored, the compiler joins the three bytes into a word and takes it apart
+    /// again, a few instructions a pixel, where a loop of matte pixels stores each alone.
+    #[inline(always)]
+    pub(crate) fn paint_matte(
+        &self,
+        material: &Material,
+        diffuse: Fx,
+        colour: Rgb,
+        pixel: &mut Rgb,
+    ) {
         let k = self.brightness(material, diffuse).to_bits();
         // Up to a brightness of 1, the common case, no channel passes 255 (255·2¹⁶ + 2¹⁵ is
         // below 256·2¹⁶): nothing to hold. Above it (and below 0, which as a `u32` is above
         // too), the channels are held out of line.
         if (k as u32) > 1 << 16 {
-            return bright_pixel(k, colour);
+            *pixel = bright_pixel(k, colour);
+            return;
         }
         let channel = |c: u8| scaled_channel(c, k as u32) as u8;
-        Rgb::new(channel(colour.r), channel(colour.g), channel(colour.b))
+        pixel.r = channel(colour.r);
+        pixel.g = channel(colour.g);
+        pixel.b = channel(colour.b);
     }
 
     /// A surface's brightness: the ambient term plus `diffuse`, the light it receives,

@@ -238,7 +238,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
                     Some(cos) => fx::mul_unit(light.intensity, cos),
                     None => Fx::ZERO,
                 };
-                *pixel = self.matte_pixel(material, diffuse, material.colour);
+                self.paint_matte(material, diffuse, material.colour, pixel);
                 offsets.step_across();
             }
             return;
