@@ -548,8 +548,9 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         Some((l, cos))
     }
 
-    /// Whether anything but object `leaving` lies on `ray` closer than `√distance_squared`
-    /// (a Q32.32 value): a shadow ray towards light `light`, which stops at the first
+    /// Whether anything but object `leaving` lies on the ray from `from` along the unit `dir`
+    /// closer than `√distance_squared` (a Q32.32 value): a shadow ray towards light `light`,
+    /// made only for the objects that come to the whole test, which stops at the first
     /// occluder, tries only the objects that can shadow object `leaving` from that light
     /// (`Scene::shadowers`) and are in `among` (bit `i` for object `i`, which must hold every
     /// object that can block the ray in scenes of up to 32 objects), and skips the spheres
@@ -616,8 +617,8 @@ impl<const N: usize, const L: usize> Scene<N, L> {
 /// `√distance_squared` ([`Shape::blocks`]). The ray is made here, for the few objects that come
 /// to the whole test: most shadow rays end at an empty set or at the cones, where a ray made
 /// first would be stored for nothing. Out of line on the Armv7-M cores, where in line it
-/// took the shadow walk's registers; in line on ARMv6-M and RV32, where one copy of the test
-/// takes more code than the calls do.
+/// took the shadow walk's registers; in line on ARMv6-M and RV32, where out of line it
+/// measured slower (and on the M0 a second copy of the test, past its flash).
 #[cfg_attr(all(target_arch = "arm", target_has_atomic = "32"), inline(never))]
 #[cfg_attr(
     not(all(target_arch = "arm", target_has_atomic = "32")),
