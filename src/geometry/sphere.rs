@@ -7,7 +7,7 @@ use crate::error::{Error, Quantity};
 use crate::geometry::hit::Hit;
 use crate::geometry::ray::Ray;
 use crate::numbers::fx::{self, FAR, FRAC, Fx};
-use crate::numbers::isqrt::isqrt;
+use crate::numbers::isqrt::{isqrt, isqrt_in_line};
 use crate::numbers::vec3::Vec3;
 
 /// A near crossing at least this far ahead (a quarter of a unit) proves the origin outside
@@ -201,7 +201,7 @@ impl Sphere {
             return None;
         }
         // r² − d² ≤ r² ≤ 2²⁰·2³², so a fits Q16.16.
-        let a = Fx::from_bits(isqrt(r2 - d2) as i32);
+        let a = Fx::from_bits(isqrt_in_line(r2 - d2) as i32);
         let near = t_close - a;
         let t = if near >= SURELY_OUTSIDE {
             near

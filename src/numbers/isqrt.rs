@@ -22,6 +22,16 @@ use crate::numbers::reciprocal::{rsqrt, rsqrt_unit, rsqrt_unit_in_line};
 /// ```
 #[must_use]
 pub const fn isqrt(x: u64) -> u64 {
+    isqrt_by::<{ !fx::NO_LONG_MULTIPLY }>(x)
+}
+
+/// [`isqrt`], its whole steps below 2⁴⁴ in 32-bit loops of their own with `OWN_STEPS`
+/// ([`steps_below_two_to_the_44`]), where a 32-bit comparison costs less than a 64-bit one;
+/// without, in the one pair of 64-bit loops, the residual below 2⁴⁴ taken from the low words
+/// all the same: the Cortex-M0's form, for its flash. Both forms are compiled everywhere, so
+/// the host tests check both.
+#[inline(always)]
+const fn isqrt_by<const OWN_STEPS: bool>(x: u64) -> u64 {
     if x < 2 {
         return x;
     }
@@ -43,6 +53,9 @@ pub const fn isqrt(x: u64) -> u64 {
         r.abs_diff(x.isqrt() as u32) <= 1 << 8,
         "isqrt: the estimate is far from the root"
     );
+    if OWN_STEPS && x < 1 << 44 {
+        return steps_below_two_to_the_44(x, r) as u64;
+    }
     let mut residual = if x < 1 << 44 {
         (x as u32).wrapping_sub(r.wrapping_mul(r)) as i32 as i64
     } else {
@@ -57,6 +70,46 @@ pub const fn isqrt(x: u64) -> u64 {
         r += 1;
     }
     r as u64
+}
+
+/// [`isqrt`]'s whole steps for `2 ≤ x < 2⁴⁴` from an estimate `r` within 2⁸ of the root, in
+/// 32-bit words: the residual `x − r²` lies within ±2³¹ (within about ±2²⁶ for the estimate's
+/// 4), so taken modulo 2³² it is exact.
+#[inline(always)]
+const fn steps_below_two_to_the_44(x: u64, mut r: u32) -> u32 {
+    debug_assert!(
+        x >= 2 && x < 1 << 44 && r.abs_diff(x.isqrt() as u32) <= 1 << 8,
+        "steps_below_two_to_the_44: x out of range, or the estimate far from the root"
+    );
+    let mut residual = (x as u32).wrapping_sub(r.wrapping_mul(r)) as i32;
+    while residual < 0 {
+        r -= 1; // r² > x ≥ 2: r is at least 2
+        residual += (2 * r + 1) as i32; // (r + 1)² − r²
+    }
+    while residual > (2 * r) as i32 {
+        residual -= (2 * r + 1) as i32;
+        r += 1;
+    }
+    r
+}
+
+/// [`isqrt`], in line on the Armv7-M cores for an `x` below 2⁴⁴, where every sphere test's
+/// root lies: the sphere test takes it, where a call would move the test's values out of the
+/// registers it clobbers. Larger values, and every value on the other chips, whose flash does
+/// not hold a copy in each sphere test, take the call.
+#[inline(always)]
+pub(crate) const fn isqrt_in_line(x: u64) -> u64 {
+    in_line_by::<{ cfg!(all(target_arch = "arm", target_has_atomic = "32")) }>(x)
+}
+
+/// [`isqrt_in_line`] with the root below 2⁴⁴ in line where `IN_LINE`: compiled everywhere, so
+/// the host tests check it.
+#[inline(always)]
+const fn in_line_by<const IN_LINE: bool>(x: u64) -> u64 {
+    if IN_LINE && x >= 2 && x < 1 << 44 {
+        return steps_below_two_to_the_44(x, estimate(x) as u32) as u64;
+    }
+    isqrt(x)
 }
 
 /// `1/√x` as `(y, half)` (see `rsqrt`) and `x`'s top 32 bits at the bit length `2·half`, for
@@ -143,14 +196,26 @@ mod tests {
     fn every_neighbour_of_a_square_below_and_about_two_to_the_44() {
         // Below 2⁴⁴ the whole steps go by a residual from the low words alone: every root up
         // to 2²² at both ends of its interval, `r²` and `r² + 2r`, and their neighbours, where
-        // a step taken one short or one too far shows; then both sides of 2⁴⁴ itself.
+        // a step taken one short or one too far shows; then both sides of 2⁴⁴ itself. Each
+        // form of the steps: their own 32-bit loops, the M0's 64-bit ones, the sphere test's
+        // in line.
+        let check = |x: u64| {
+            let forms = [
+                super::isqrt_by::<true>(x),
+                super::isqrt_by::<false>(x),
+                super::in_line_by::<true>(x),
+            ];
+            for (form, r) in forms.into_iter().enumerate() {
+                assert!(is_floor_sqrt(x, r), "form {form}: isqrt({x}) = {r}");
+            }
+        };
         for r in 1u64..=1 << 22 {
             for x in [r * r - 1, r * r, r * r + 2 * r, r * r + 2 * r + 1] {
-                assert!(is_floor_sqrt(x, isqrt(x)), "isqrt({x}) = {}", isqrt(x));
+                check(x);
             }
         }
         for x in ((1u64 << 44) - 1000)..((1 << 44) + 1000) {
-            assert!(is_floor_sqrt(x, isqrt(x)), "isqrt({x}) = {}", isqrt(x));
+            check(x);
         }
     }
 
