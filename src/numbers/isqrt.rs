@@ -42,6 +42,9 @@ const fn isqrt_by<const OWN_STEPS: bool>(x: u64) -> u64 {
     } else {
         estimate as u32
     };
+    if OWN_STEPS && x < 1 << 44 {
+        return steps_below_two_to_the_44(x, r) as u64;
+    }
     // The whole steps go by the residual `x − r²`: `(r + 1)² ≤ x` is `x − r² > 2r`, and a
     // step moves it by `2r + 1`. The estimate is within 8 of the root, so the residual is
     // far inside an `i64`; below 2⁴⁴ (every sphere test's root) the root is below 2²², the
@@ -53,9 +56,6 @@ const fn isqrt_by<const OWN_STEPS: bool>(x: u64) -> u64 {
         r.abs_diff(x.isqrt() as u32) <= 1 << 8,
         "isqrt: the estimate is far from the root"
     );
-    if OWN_STEPS && x < 1 << 44 {
-        return steps_below_two_to_the_44(x, r) as u64;
-    }
     let mut residual = if x < 1 << 44 {
         (x as u32).wrapping_sub(r.wrapping_mul(r)) as i32 as i64
     } else {
