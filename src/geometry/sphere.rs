@@ -269,7 +269,10 @@ impl Sphere {
     /// Whether `hit`, a hit on this sphere, was reached from inside it: its normal, which
     /// faces the ray, points towards the centre's side of the surface.
     pub(crate) fn reached_from_inside(&self, hit: &Hit) -> bool {
-        hit.normal.dot_wide(hit.point - self.centre) < 0
+        // A hit point lies within the budget and a centre within LIMIT, and the normal is a
+        // unit vector: the difference needs no saturation check, nor the dot product a
+        // range check (`Vec3::dot_wide`'s, with its 128-bit path).
+        hit.normal.dot_wide_exact(hit.point.minus(self.centre)) < 0
     }
 
     /// The crossing ahead of a ray whose near crossing `t_close − a` came out below
