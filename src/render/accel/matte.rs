@@ -391,9 +391,9 @@ struct Offsets {
     step_remainder: [u64; 3],
 }
 
-// Both out of line on RV32, where the 64-bit shifts and carries are long sequences whose
-// copies in each loop its flash does not hold; in line elsewhere, but for the set-up on the
-// Cortex-M0, whose products are long there too, and which a stretch makes once.
+// The set-up out of line on RV32, where its 64-bit shifts are long sequences, and on the
+// Cortex-M0, whose products are long there too, and which a stretch makes once; the step in
+// line on every chip, in each loop that walks a stretch.
 impl Offsets {
     #[cfg_attr(
         any(target_arch = "riscv32", not(target_has_atomic = "32")),
@@ -425,8 +425,7 @@ impl Offsets {
         Vec3::new(x, y, z)
     }
 
-    #[cfg_attr(not(target_arch = "riscv32"), inline)]
-    #[cfg_attr(target_arch = "riscv32", inline(never))]
+    #[inline]
     fn step(&mut self) {
         for i in 0..3 {
             if self.step_quotient[i] != 0 || self.step_remainder[i] != 0 {
