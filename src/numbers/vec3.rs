@@ -106,7 +106,7 @@ impl Vec3 {
         let wrapped = self.dot_wide_wrapping(o);
         // Three products of at most 2⁶² each sum to at most 3 · 2⁶² in magnitude, so a sum
         // that wrapped lies at least 2⁶² from zero: one that lies within 2⁶¹ is exact. Any
-        // other goes to the exact 128-bit sum, which only out-of-budget vectors need.
+        // other goes to the exact sum, saturated, which only out-of-budget vectors need.
         if wrapped >> 61 == wrapped >> 63 {
             wrapped
         } else {
@@ -123,23 +123,26 @@ impl Vec3 {
             .wrapping_add(fx::wide_mul(self.z.to_bits(), o.z.to_bits()))
     }
 
-    /// The exact dot product at 128 bits, saturated to `i64`: the rare path of
+    /// The exact dot product, saturated to `i64`: the rare path of
     /// [`Vec3::dot_wide`] and [`Vec3::dot`], for vectors far outside the overflow budget.
     #[cold]
     #[inline(never)]
     const fn dot_wide_saturated(self, o: Vec3) -> i64 {
-        // Each product is exact at 64 bits: only the sum needs 128, and its additions are
-        // far shorter than 128-bit products where a word is 32 bits.
-        const fn p(a: Fx, b: Fx) -> i128 {
-            fx::wide_mul(a.to_bits(), b.to_bits()) as i128
+        // Each product is exact at 64 bits and at most 2⁶² in magnitude, and the sum is
+        // followed through two 64-bit additions by their overflows, shorter than a 128-bit
+        // sum where a word is 32 bits. The first overflows only at `2⁶² + 2⁶²`, to −2⁶³; the
+        // second then only downwards, and the two cancel.
+        const fn p(a: Fx, b: Fx) -> i64 {
+            fx::wide_mul(a.to_bits(), b.to_bits())
         }
-        let sum = p(self.x, o.x) + p(self.y, o.y) + p(self.z, o.z);
-        if sum > i64::MAX as i128 {
-            i64::MAX
-        } else if sum < i64::MIN as i128 {
-            i64::MIN
-        } else {
-            sum as i64
+        let z = p(self.z, o.z);
+        let (pair, first) = p(self.x, o.x).overflowing_add(p(self.y, o.y));
+        let (sum, second) = pair.overflowing_add(z);
+        match (first, second) {
+            (false, false) | (true, true) => sum,
+            (true, false) => i64::MAX,
+            (false, true) if z > 0 => i64::MAX,
+            (false, true) => i64::MIN,
         }
     }
 
@@ -223,8 +226,8 @@ impl Vec3 {
     ///
     /// The three products are summed with wrapping, which is exact whenever the rounded
     /// result fits Q16.16: a sum that wrapped lies at least 2⁶² from zero and cannot round
-    /// into range. Only a result out of range takes the slow path, to find its sign at 128
-    /// bits, so saturation costs nothing on the way through.
+    /// into range. Only a result out of range takes the slow path, to find its sign from the
+    /// additions' overflows, so saturation costs nothing on the way through.
     #[inline]
     #[must_use]
     pub const fn dot(self, o: Vec3) -> Fx {
