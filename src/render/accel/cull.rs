@@ -72,9 +72,10 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// every plane ([`Eye`]'s `before_planes`) is nearer than any plane's, and then the planes
     /// need no test. A sphere whose near side lies beyond the nearest hit found so far takes
     /// one dot product ([`Sphere::hit_distance_within`]).
-    // In line but on the Cortex-M0, whose flash the firmware is held to: one copy there.
-    #[cfg_attr(not(all(target_arch = "arm", not(target_has_atomic = "32"))), inline)]
-    #[cfg_attr(all(target_arch = "arm", not(target_has_atomic = "32")), inline(never))]
+    // In line on every chip: its one caller is the row's walk, where on the Cortex-M0 too
+    // (whose flash the firmware is held to) the copy comes out shorter than a function of
+    // its own and the call.
+    #[inline]
     pub(crate) fn shoot_from_eye(&self, ray: &Ray, among: u64, eye: &Eye<N>) -> Option<SceneHit> {
         let order = [among & !eye.planes, among & eye.planes];
         self.nearest_among(
