@@ -238,9 +238,23 @@ impl Vec3 {
     }
 
     /// [`Vec3::dot`], out of line: for the work of a frame or a row (set-up, culling, shadow
-    /// sets), which shares one copy.
+    /// sets), which shares one copy. Where a 64-bit product is a long sequence, a unit-sized
+    /// `self` (within 2¹⁷ raw) and an `o` within 2²⁸ raw, as those are (a normal or a step
+    /// along a row, and a difference of points within `LIMIT`), take the split products of
+    /// [`Vec3::dot_exact`], the same value: the dot product then lies within 3·2²⁹ raw, and
+    /// fits.
     #[inline(never)]
     pub(crate) const fn dot_once(self, o: Vec3) -> Fx {
+        self.dot_by::<{ fx::NO_LONG_MULTIPLY }>(o)
+    }
+
+    /// [`Vec3::dot`], from the split products within [`Vec3::dot_once`]'s bounds where
+    /// `SPLIT`: both forms are compiled everywhere, so the host tests check the M0's.
+    #[inline(always)]
+    const fn dot_by<const SPLIT: bool>(self, o: Vec3) -> Fx {
+        if SPLIT && self.within_raw(1 << 17) && o.within_raw(1 << 28) {
+            return Fx::from_bits(split_dot_unit(self, o));
+        }
         self.dot(o)
     }
 
@@ -719,6 +733,61 @@ mod tests {
             moved > 100_000,
             "only {moved} vectors with a shift below 33"
         );
+    }
+
+    #[test]
+    fn the_split_dot_product_is_the_dot_product_within_dot_onces_bounds() {
+        // `dot_once` on the Cortex-M0 takes the split products for a `self` within 2¹⁷ raw
+        // and an `o` within 2²⁸: the same value as `dot`, which never saturates there. The
+        // bounds themselves, both signs, and random values within them.
+        let mut rng = crate::xorshift::XorShift(0x6a09_e667_f3bc_c908);
+        let ends = [1 << 17, -(1 << 17), 0, 1];
+        let far = [1 << 28, -(1 << 28), 0, -1];
+        for i in 0..100_000u32 {
+            let mut next = |bits: u32| ((rng.next() as i64) >> (64 - bits)) as i32;
+            let (a, b) = (i as usize % 4, (i as usize / 4) % 4);
+            let u = Vec3::new(
+                Fx::from_bits(if i < 64 {
+                    ends[a]
+                } else {
+                    next(18).clamp(-(1 << 17), 1 << 17)
+                }),
+                Fx::from_bits(if i < 64 {
+                    ends[b]
+                } else {
+                    next(18).clamp(-(1 << 17), 1 << 17)
+                }),
+                Fx::from_bits(next(18).clamp(-(1 << 17), 1 << 17) >> (i % 7)),
+            );
+            let v = Vec3::new(
+                Fx::from_bits(if i < 64 {
+                    far[a]
+                } else {
+                    next(29).clamp(-(1 << 28), 1 << 28)
+                }),
+                Fx::from_bits(if i < 64 { far[b] } else { next(29) >> (i % 23) }),
+                Fx::from_bits(next(29).clamp(-(1 << 28), 1 << 28)),
+            );
+            assert!(u.within_raw(1 << 17) && v.within_raw(1 << 28));
+            assert_eq!(
+                super::split_dot_unit(u, v),
+                u.dot(v).to_bits(),
+                "{u:?} · {v:?}"
+            );
+            assert_eq!(u.dot_by::<true>(v), u.dot(v), "{u:?} · {v:?}");
+        }
+        // Past the bound `dot` saturates, and so must `dot_once`: the bound is where the split
+        // products stop being the answer.
+        let unit = Vec3::new(
+            Fx::from_bits(1 << 17),
+            Fx::from_bits(1 << 17),
+            Fx::from_bits(1 << 17),
+        );
+        for raw in [(1 << 29) + 1, (1 << 30) - 1, i32::MAX] {
+            let long = Vec3::new(Fx::from_bits(raw), Fx::from_bits(raw), Fx::from_bits(raw));
+            assert_eq!(unit.dot_by::<true>(long), Fx::MAX);
+            assert_eq!(unit.dot_by::<true>(-long), Fx::MIN);
+        }
     }
 
     #[test]
