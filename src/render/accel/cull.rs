@@ -7,7 +7,7 @@ use crate::geometry::ray::Ray;
 use crate::geometry::shape::Shape;
 use crate::geometry::sphere::Sphere;
 use crate::numbers::bits;
-use crate::numbers::fx::{FAR, Fx};
+use crate::numbers::fx::{self, FAR, Fx};
 use crate::numbers::isqrt::isqrt_once;
 use crate::numbers::vec3::Vec3;
 use crate::scene::hit::SceneHit;
@@ -309,14 +309,22 @@ pub(crate) fn row_ball(sphere: &Sphere, eye: Vec3, normal: Vec3) -> (Vec3, Fx) {
     // n·(C − eye), rounded down: a unit off at most, which the margin covers.
     let d = normal.dot_wide_exact(to_centre) >> 16;
     let off = (d.abs() - margin).max(0);
-    let squared = (radius * radius - off * off).max(0) + margin * margin;
+    // Each factor below 2²⁸ (radii, distances and margins of points within ±1024): the
+    // products of two `i32`s, as the work of a row takes them (`fx::wide_mul_once`).
+    let square = |v: i64| {
+        debug_assert!(v.unsigned_abs() < 1 << 28, "row_ball: a length past 2²⁸");
+        fx::wide_mul_once(v as i32, v as i32)
+    };
+    let squared = (square(radius) - square(off)).max(0) + square(margin);
     let widened = isqrt_once(squared as u64) as i64 + 1 + (radius >> 10) + (1 << 6);
     if widened >= radius {
         return (centre, r);
     }
     // C' = C − d·n, each component rounded down.
     let across = |c: Fx, n: Fx| {
-        Fx::from_bits((c.to_bits() as i64 - ((n.to_bits() as i64 * d) >> 16)) as i32)
+        Fx::from_bits(
+            (c.to_bits() as i64 - (fx::wide_mul_once(n.to_bits(), d as i32) >> 16)) as i32,
+        )
     };
     let circle = Vec3::new(
         across(centre.x, normal.x),

@@ -400,13 +400,12 @@ impl Offsets {
         inline(never)
     )]
     fn new(scale: Scale, start: Vec3, step: Vec3) -> Self {
-        let m = scale.m as i64;
         // Past 63 every offset rounds to 0, and stays there (`offset` says why).
         let (m, shift) = match scale.shift {
-            shift @ 1..64 => (m, shift as u32),
+            shift @ 1..64 => (scale.m, shift as u32),
             _ => (0, 1),
         };
-        let p = |c: Fx| c.to_bits() as i64 * m;
+        let p = |c: Fx| fx::wide_mul_once(c.to_bits(), m);
         let [x, y, z] =
             [start.x, start.y, start.z].map(|c| split(p(c) + (1 << (shift - 1)), shift));
         let [sx, sy, sz] = [step.x, step.y, step.z].map(|c| split(p(c), shift));

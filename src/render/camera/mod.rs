@@ -10,7 +10,7 @@ use embedded_graphics::geometry::Size;
 use crate::check::{self, within};
 use crate::error::{CameraProblem, Error, Quantity};
 use crate::geometry::ray::Ray;
-use crate::numbers::fx::{FRAC, Fx};
+use crate::numbers::fx::{self, FRAC, Fx};
 use crate::numbers::isqrt::{isqrt, isqrt_once};
 use crate::numbers::vec3::Vec3;
 
@@ -478,8 +478,21 @@ impl Camera {
         // |kx|, |ky| < 2³⁸ for any u32 column or row and n ≤ 16. `right` is a unit vector in
         // pixel units (raw components within 2¹⁶), `down` at most 4 pixels long (raw 2¹⁸) and
         // `forward` at most 16 384 (raw 2³⁰), so each sum is below 2⁵⁷.
+        // On the screen (and for a few thousand pixels about it) the offsets fit 32 bits: the
+        // products of two `i32`s, as the work of a row takes them (`fx::wide_mul_once`).
+        let (small, kx32, ky32) = (
+            kx == kx as i32 as i64 && ky == ky as i32 as i64,
+            kx as i32,
+            ky as i32,
+        );
         let c = |f: Fx, r: Fx, d: Fx| {
-            f.to_bits() as i64 * denom + r.to_bits() as i64 * kx + d.to_bits() as i64 * ky
+            if small {
+                f.to_bits() as i64 * denom
+                    + fx::wide_mul_once(r.to_bits(), kx32)
+                    + fx::wide_mul_once(d.to_bits(), ky32)
+            } else {
+                f.to_bits() as i64 * denom + r.to_bits() as i64 * kx + d.to_bits() as i64 * ky
+            }
         };
         (
             [
@@ -632,7 +645,7 @@ impl Camera {
         if z - r < 1 << 4 {
             return None;
         }
-        let product = |a: i32, b: i32| a as i64 * b as i64;
+        let product = fx::wide_mul_once;
         let below = product(z - r, z + r);
         // √k rounded up, so that the tangents' spread is not understated.
         let root = isqrt_once((product(x, x) + below) as u64) as i32 + 1;
