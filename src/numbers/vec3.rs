@@ -324,6 +324,15 @@ impl Vec3 {
         sq(self.x) + sq(self.y) + sq(self.z)
     }
 
+    /// [`Vec3::length_squared_wide`] for the work of a run or a row (its ends, where it
+    /// starts), out of line on the Cortex-M0, where the squares are a long sequence whose
+    /// copies its flash does not hold.
+    #[cfg_attr(all(target_arch = "arm", not(target_has_atomic = "32")), inline(never))]
+    #[cfg_attr(not(all(target_arch = "arm", not(target_has_atomic = "32"))), inline)]
+    pub(crate) const fn length_squared_once(self) -> u64 {
+        self.length_squared_wide()
+    }
+
     /// ‖self‖, truncated to Q16.16: `isqrt` of the exact Q32.32 square.
     // Out of line: only set-up, row and shadow-set code takes a length, none a pixel, and
     // it is long on chips without 64-bit multiplication.

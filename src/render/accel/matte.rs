@@ -308,7 +308,7 @@ impl Walk {
         let last = self.towards.plus(step.steps(len.saturating_sub(1) as i32));
         [self.towards, last]
             .iter()
-            .all(|end| end.length_squared_wide() <= self.reach)
+            .all(|end| end.length_squared_once() <= self.reach)
     }
 }
 

@@ -117,9 +117,9 @@ impl RowSquares {
     // Out of line: once a run, and long where 64-bit products are library calls.
     #[inline(never)]
     pub(crate) fn new(start: Vec3, step: Vec3) -> Self {
-        let r2 = step.length_squared_wide() as i64;
+        let r2 = step.length_squared_once() as i64;
         RowSquares {
-            square: start.length_squared_wide(),
+            square: start.length_squared_once(),
             increment: 2 * start.dot_wide_exact(step) + r2,
             growth: 2 * r2,
         }

@@ -60,7 +60,7 @@ impl RunLine {
         // Where an end lies past the reach, the hits' line is not followed: points far out
         // would leave the products' budget. Within it at both ends, every column is within it
         // (‖w(k)‖² is convex in `k`), and every hit within FAR of the eye.
-        let within = |k: usize| self.towards_column(k).length_squared_wide() <= self.reach;
+        let within = |k: usize| self.towards_column(k).length_squared_once() <= self.reach;
         if !(within(0) && within(last)) {
             return 0..self.len;
         }
