@@ -194,7 +194,7 @@ impl Plane {
     /// `−n·(p_r − p0)`, the numerator of Eq. 4.2, exactly in Q32.32: it depends on the
     /// ray's origin alone, so rays that share one (a camera's) can share it.
     pub(crate) fn numerator(&self, origin: Vec3) -> Numerator {
-        let value = -self.normal.dot_wide_exact(origin - self.point);
+        let value = -self.normal.dot_wide_once(origin - self.point);
         Numerator {
             value,
             mantissa: if value == 0 {

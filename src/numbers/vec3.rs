@@ -163,6 +163,15 @@ impl Vec3 {
         sparse_mul(self.x, o.x) + sparse_mul(self.y, o.y) + sparse_mul(self.z, o.z)
     }
 
+    /// [`Vec3::dot_wide_exact`] for the work of a run or a row (a plane's numerator, the
+    /// culling and the run's tests), out of line on the Cortex-M0, where the products are a
+    /// long sequence whose copies its flash does not hold.
+    #[cfg_attr(all(target_arch = "arm", not(target_has_atomic = "32")), inline(never))]
+    #[cfg_attr(not(all(target_arch = "arm", not(target_has_atomic = "32"))), inline)]
+    pub(crate) const fn dot_wide_once(self, o: Vec3) -> i64 {
+        self.dot_wide_exact(o)
+    }
+
     /// `self + o` for the render path's points and offsets, which lie within the overflow
     /// budget (below 2¹⁵ in magnitude, sums included): no saturation check, which the `+`
     /// operator makes on every component (debug builds check that none is needed).

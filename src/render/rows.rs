@@ -262,7 +262,7 @@ fn cast_row<const N: usize, const L: usize>(
         if let Some(index) = one
             && matte
             && let Some(plane) = matte_plane(scene, index)
-            && plane.normal().dot_wide_exact(camera.column_step()) == 0
+            && plane.normal().dot_wide_once(camera.column_step()) == 0
         {
             let num = eye.numerator(index);
             let towards = runs.towards(first);

@@ -307,7 +307,7 @@ pub(crate) fn row_ball(sphere: &Sphere, eye: Vec3, normal: Vec3) -> (Vec3, Fx) {
     let radius = r.to_bits() as i64;
     let margin = stray(to_centre.l1_raw() + radius);
     // n·(C − eye), rounded down: a unit off at most, which the margin covers.
-    let d = normal.dot_wide_exact(to_centre) >> 16;
+    let d = normal.dot_wide_once(to_centre) >> 16;
     let off = (d.abs() - margin).max(0);
     // Each factor below 2²⁸ (radii, distances and margins of points within ±1024): the
     // products of two `i32`s, as the work of a row takes them (`fx::wide_mul_once`).

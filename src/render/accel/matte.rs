@@ -85,7 +85,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         };
         let (eye, step, towards) = (camera.eye(), camera.column_step(), run.towards);
         // Where the plane is not ahead of the row, nothing is within reach.
-        let scale = plane.scale_along(run.num, plane.normal().dot_wide_exact(towards));
+        let scale = plane.scale_along(run.num, plane.normal().dot_wide_once(towards));
         let reach = scale.map_or(0, far_reach);
         let scale = scale.unwrap_or(Scale { m: 0, shift: 1 });
         let walk = |from: usize| Walk {

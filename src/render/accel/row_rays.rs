@@ -120,7 +120,7 @@ impl RowSquares {
         let r2 = step.length_squared_once() as i64;
         RowSquares {
             square: start.length_squared_once(),
-            increment: 2 * start.dot_wide_exact(step) + r2,
+            increment: 2 * start.dot_wide_once(step) + r2,
             growth: 2 * r2,
         }
     }

@@ -76,7 +76,7 @@ impl RunLine {
         // the column's), and the coarse shifts move it by under two coarse units.
         let g = normal.cross_once(sphere.centre() - light);
         let slack = g.l1_raw();
-        let side = |p: Vec3| g.dot_wide_exact(p) >> COARSE;
+        let side = |p: Vec3| g.dot_wide_once(p) >> COARSE;
         // The farthest a hit lies from the light: at most the farther end's exact distance
         // (convexity), which `length` truncates by under a unit and the ends' and the
         // column's roundings move by under a unit each. (Taken again over the columns found,
