@@ -413,12 +413,8 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// The diffuse light a surface `at` receives (each light's intensity times its cosine,
     /// summed), from every light whose shadow ray reaches it: all a surface without a
     /// highlight needs of the lights. `on_plane` and `plane_shadowers` as for `local`.
-    // In line but on the Cortex-M0, as the sphere's hit is (`Sphere::hit_distance`); one copy
-    // there.
-    #[cfg_attr(
-        not(all(target_arch = "arm", not(target_has_atomic = "32"))),
-        inline(always)
-    )]
+    // In line on every chip, in the pixel's shading and the plain path's.
+    #[inline(always)]
     fn matte_diffuse(&self, at: &Surface, on_plane: bool, plane_shadowers: &[u32; L]) -> Fx {
         let diffuse_from = |light_index: usize, light: &Light| {
             let among = self.shadow_set(light_index, on_plane, plane_shadowers);
