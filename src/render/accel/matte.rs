@@ -391,14 +391,10 @@ struct Offsets {
     step_remainder: [u64; 3],
 }
 
-// The set-up out of line on RV32, where its 64-bit shifts are long sequences, and on the
-// Cortex-M0, whose products are long there too, and which a stretch makes once; the step in
-// line on every chip, in each loop that walks a stretch.
+// The set-up out of line on RV32, where its 64-bit shifts are long sequences which a stretch
+// makes once; the step in line on every chip, in each loop that walks a stretch.
 impl Offsets {
-    #[cfg_attr(
-        any(target_arch = "riscv32", not(target_has_atomic = "32")),
-        inline(never)
-    )]
+    #[cfg_attr(target_arch = "riscv32", inline(never))]
     fn new(scale: Scale, start: Vec3, step: Vec3) -> Self {
         // Past 63 every offset rounds to 0, and stays there (`offset` says why).
         let (m, shift) = match scale.shift {
