@@ -391,8 +391,7 @@ impl Vec3 {
     }
 
     /// [`Vec3::normalize_with_square`] with the reciprocal root in line
-    /// ([`rsqrt_unit_in_line`]); but on the Cortex-M0, whose flash the firmware is held to,
-    /// where the root stays a call.
+    /// ([`rsqrt_unit_in_line`]), for a light's direction at each lit pixel.
     #[inline(always)]
     pub(crate) const fn normalize_in_line(self, square: u64) -> Option<Vec3> {
         self.normalize_by::<true>(square)
@@ -427,8 +426,7 @@ impl Vec3 {
     }
 
     /// [`Vec3::unit_component_with_square`] with the reciprocal root in line
-    /// ([`rsqrt_unit_in_line`]), for a loop that takes one a column; but on the Cortex-M0,
-    /// whose flash the firmware is held to, where the root stays a call.
+    /// ([`rsqrt_unit_in_line`]), for a loop that takes one a column.
     #[inline(always)]
     pub(crate) const fn unit_component_in_line(c: Fx, square: u64) -> Option<Fx> {
         match unit_scale::<true>(square) {
@@ -447,14 +445,15 @@ impl Vec3 {
 /// `1/‖v‖` for a vector `v` whose squared length is `square`, as a factor `y` and a shift
 /// (`y · 2^−shift · 2¹⁶`), or `None` for the zero vector: what each of a unit vector's
 /// components is multiplied by ([`unit_part`]). With `IN_LINE`, the root is taken in line
-/// ([`rsqrt_unit_in_line`]) but on the Cortex-M0, whose flash holds one copy of it.
+/// ([`rsqrt_unit_in_line`]): where a call would move the caller's values out of the registers
+/// it clobbers.
 #[inline]
 const fn unit_scale<const IN_LINE: bool>(square: u64) -> Option<(u32, u32)> {
     if square == 0 {
         return None;
     }
     // 1/‖self‖ in units of 2⁻¹⁶ is y · 2⁻⁽³⁰⁺ˢʰⁱᶠᵗ⁾ · 2¹⁶.
-    let (y, shift) = if IN_LINE && !fx::NO_LONG_MULTIPLY {
+    let (y, shift) = if IN_LINE {
         let (y, shift, _) = rsqrt_unit_in_line(square);
         (y, shift)
     } else {
