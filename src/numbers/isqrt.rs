@@ -117,11 +117,11 @@ const fn in_line_by<const IN_LINE: bool>(x: u64) -> u64 {
 /// of the root, a few whole steps, where the Newton step would cost three 64-bit products;
 /// the sphere tests' roots are there. The seed is taken in line with the mantissa it looked up
 /// (`rsqrt_unit_in_line`): a call would move the sphere test's values out of the registers it
-/// clobbers, and the mantissa need not be found again. But on the Cortex-M0, whose flash holds
-/// one copy of the root, which hands back the root alone.
+/// clobbers, and the mantissa need not be found again (on the Cortex-M0 and RV32, which have
+/// no count-leading-zeros instruction, a second bit length).
 #[inline(always)]
 const fn root_and_mantissa(x: u64) -> (u32, u32, u32) {
-    if x < 1 << 44 && !fx::NO_LONG_MULTIPLY {
+    if x < 1 << 44 {
         return rsqrt_unit_in_line(x);
     }
     let (y, half) = if x < 1 << 44 { rsqrt_unit(x) } else { rsqrt(x) };
