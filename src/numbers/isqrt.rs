@@ -1,6 +1,6 @@
 //! The exact integer square root, kept in one place so that it can be swapped by measurement.
 
-use crate::numbers::fx::{self, top_word, wide_mul_u32};
+use crate::numbers::fx::{top_word, wide_mul_u32};
 use crate::numbers::reciprocal::{rsqrt, rsqrt_unit, rsqrt_unit_in_line};
 
 /// `floor(sqrt(x))` for every `u64`, exactly.
@@ -22,16 +22,6 @@ use crate::numbers::reciprocal::{rsqrt, rsqrt_unit, rsqrt_unit_in_line};
 /// ```
 #[must_use]
 pub const fn isqrt(x: u64) -> u64 {
-    isqrt_by::<{ !fx::NO_LONG_MULTIPLY }>(x)
-}
-
-/// [`isqrt`], its whole steps below 2⁴⁴ in 32-bit loops of their own with `OWN_STEPS`
-/// ([`steps_below_two_to_the_44`]), where a 32-bit comparison costs less than a 64-bit one;
-/// without, in the one pair of 64-bit loops, the residual below 2⁴⁴ taken from the low words
-/// all the same: the Cortex-M0's form, for its flash. Both forms are compiled everywhere, so
-/// the host tests check both.
-#[inline(always)]
-const fn isqrt_by<const OWN_STEPS: bool>(x: u64) -> u64 {
     if x < 2 {
         return x;
     }
@@ -42,25 +32,19 @@ const fn isqrt_by<const OWN_STEPS: bool>(x: u64) -> u64 {
     } else {
         estimate as u32
     };
-    if OWN_STEPS && x < 1 << 44 {
+    // Below 2⁴⁴, where every sphere test's root lies, in 32-bit words.
+    if x < 1 << 44 {
         return steps_below_two_to_the_44(x, r) as u64;
     }
     // The whole steps go by the residual `x − r²`: `(r + 1)² ≤ x` is `x − r² > 2r`, and a
     // step moves it by `2r + 1`. The estimate is within 8 of the root, so the residual is
-    // far inside an `i64`; below 2⁴⁴ (every sphere test's root) the root is below 2²², the
-    // estimate within 4 of it, and the residual within about ±2²⁶: there it is taken from the
-    // low words of `x` and `r²` alone, exact modulo 2³², with no 64-bit square, a long
-    // sequence on the Cortex-M0. At `r = 2³² − 1` the residual is at most `2r`, so `r` never
-    // steps past it.
+    // far inside an `i64`. At `r = 2³² − 1` the residual is at most `2r`, so `r` never steps
+    // past it.
     debug_assert!(
         r.abs_diff(x.isqrt() as u32) <= 1 << 8,
         "isqrt: the estimate is far from the root"
     );
-    let mut residual = if x < 1 << 44 {
-        (x as u32).wrapping_sub(r.wrapping_mul(r)) as i32 as i64
-    } else {
-        x.wrapping_sub(wide_mul_u32(r, r)) as i64
-    };
+    let mut residual = x.wrapping_sub(wide_mul_u32(r, r)) as i64;
     while residual < 0 {
         r -= 1; // r² > x ≥ 2: r is at least 2
         residual += 2 * r as i64 + 1; // (r + 1)² − r²
@@ -197,14 +181,9 @@ mod tests {
         // Below 2⁴⁴ the whole steps go by a residual from the low words alone: every root up
         // to 2²² at both ends of its interval, `r²` and `r² + 2r`, and their neighbours, where
         // a step taken one short or one too far shows; then both sides of 2⁴⁴ itself. Each
-        // form of the steps: their own 32-bit loops, the M0's 64-bit ones, the sphere test's
-        // in line.
+        // form of the steps: `isqrt`'s and the sphere test's in line.
         let check = |x: u64| {
-            let forms = [
-                super::isqrt_by::<true>(x),
-                super::isqrt_by::<false>(x),
-                super::in_line_by::<true>(x),
-            ];
+            let forms = [isqrt(x), super::in_line_by::<true>(x)];
             for (form, r) in forms.into_iter().enumerate() {
                 assert!(is_floor_sqrt(x, r), "form {form}: isqrt({x}) = {r}");
             }
