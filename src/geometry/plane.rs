@@ -209,8 +209,8 @@ impl Plane {
     /// line: the plain path, the run loops and the shadow rays share one copy.
     #[inline(never)]
     pub(crate) fn hit_from(&self, ray: &Ray, num: &Numerator) -> Option<Hit> {
-        let square = ray.w.length_squared_wide();
-        let scale = self.scale_along(num, self.normal.dot_wide_exact(ray.w))?;
+        let square = ray.w.length_squared_once();
+        let scale = self.scale_along(num, self.normal.dot_wide_once(ray.w))?;
         if !within_far(scale, square) {
             return None;
         }
@@ -329,8 +329,8 @@ pub(crate) fn offset(scale: Scale, w: Vec3) -> Vec3 {
 #[inline]
 pub(crate) fn distance(scale: Scale, w: Vec3, dir: Vec3) -> Fx {
     // Both exact: |w·u| < 2⁴⁷ (w within 2³⁰ a component), |1 − u·u| < 2¹⁹ in Q32.32.
-    let along = w.dot_wide_exact(dir);
-    let excess = (1i64 << 32) - dir.length_squared_wide() as i64;
+    let along = w.dot_wide_once(dir);
+    let excess = (1i64 << 32) - dir.length_squared_once() as i64;
     let along = along + (((along >> 16) * excess) >> 17);
     if along <= 0 || !(1..64).contains(&scale.shift) {
         return Fx::ZERO;
