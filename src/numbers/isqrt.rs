@@ -77,13 +77,13 @@ const fn steps_below_two_to_the_44(x: u64, mut r: u32) -> u32 {
     r
 }
 
-/// [`isqrt`], in line on the Armv7-M cores for an `x` below 2⁴⁴, where every sphere test's
-/// root lies: the sphere test takes it, where a call would move the test's values out of the
-/// registers it clobbers. Larger values, and every value on the other chips, whose flash does
-/// not hold a copy in each sphere test, take the call.
+/// [`isqrt`], in line on the Arm cores for an `x` below 2⁴⁴, where every sphere test's root
+/// lies: the sphere test takes it, where a call would move the test's values out of the
+/// registers it clobbers. Larger values, and every value on RV32, whose flash does not hold a
+/// copy in each sphere test, take the call.
 #[inline(always)]
 pub(crate) const fn isqrt_in_line(x: u64) -> u64 {
-    in_line_by::<{ cfg!(all(target_arch = "arm", target_has_atomic = "32")) }>(x)
+    in_line_by::<{ cfg!(target_arch = "arm") }>(x)
 }
 
 /// [`isqrt_in_line`] with the root below 2⁴⁴ in line where `IN_LINE`: compiled everywhere, so
