@@ -270,7 +270,7 @@ impl Sphere {
         // A hit point lies within the budget and a centre within LIMIT, and the normal is a
         // unit vector: the difference needs no saturation check, nor the dot product a
         // range check (`Vec3::dot_wide`'s, with its 128-bit path).
-        hit.normal.dot_wide_exact(hit.point.minus(self.centre)) < 0
+        hit.normal.dot_wide_once(hit.point.minus(self.centre)) < 0
     }
 
     /// The crossing ahead of a ray whose near crossing `t_close − a` came out below

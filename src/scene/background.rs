@@ -80,13 +80,8 @@ impl Blend {
     }
 
     /// The colour seen along a direction whose `y` is `height` (see [`Background::along`]).
-    // In line in a run of sky's loop; but on ARMv6-M, whose flash the firmware is held to
-    // most tightly, one copy.
-    #[cfg_attr(all(target_arch = "arm", not(target_has_atomic = "32")), inline(never))]
-    #[cfg_attr(
-        not(all(target_arch = "arm", not(target_has_atomic = "32"))),
-        inline(always)
-    )]
+    // In line in a run of sky's loop, on every chip.
+    #[inline(always)]
     pub(crate) fn at(&self, height: Fx) -> Linear {
         const MOST: Fx = Fx::from_bits((1 << 16) + 1);
         // 0 straight down, 1 straight up: within −2⁻¹⁶..=1, whatever the direction is.
