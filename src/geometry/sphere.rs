@@ -269,7 +269,7 @@ impl Sphere {
     pub(crate) fn reached_from_inside(&self, hit: &Hit) -> bool {
         // A hit point lies within the budget and a centre within LIMIT, and the normal is a
         // unit vector: the difference needs no saturation check, nor the dot product a
-        // range check (`Vec3::dot_wide`'s, with its 128-bit path).
+        // range check (`Vec3::dot_wide`'s). A secondary ray's question, a call away.
         hit.normal.dot_wide_once(hit.point.minus(self.centre)) < 0
     }
 

@@ -163,9 +163,10 @@ impl Vec3 {
         sparse_mul(self.x, o.x) + sparse_mul(self.y, o.y) + sparse_mul(self.z, o.z)
     }
 
-    /// [`Vec3::dot_wide_exact`] for the work of a run or a row (a plane's numerator, the
-    /// culling and the run's tests), out of line on the Cortex-M0, where the products are a
-    /// long sequence whose copies its flash does not hold.
+    /// [`Vec3::dot_wide_exact`] where a call costs little against the work about it: a run's
+    /// or a row's (a plane's numerator, the culling and the run's tests), a plane's hit, the
+    /// side of a sphere a secondary ray met. Out of line on the Cortex-M0, where the products
+    /// are a long sequence whose copies its flash does not hold; in line elsewhere.
     #[cfg_attr(all(target_arch = "arm", not(target_has_atomic = "32")), inline(never))]
     #[cfg_attr(not(all(target_arch = "arm", not(target_has_atomic = "32"))), inline)]
     pub(crate) const fn dot_wide_once(self, o: Vec3) -> i64 {
@@ -333,9 +334,10 @@ impl Vec3 {
         sq(self.x) + sq(self.y) + sq(self.z)
     }
 
-    /// [`Vec3::length_squared_wide`] for the work of a run or a row (its ends, where it
-    /// starts), out of line on the Cortex-M0, where the squares are a long sequence whose
-    /// copies its flash does not hold.
+    /// [`Vec3::length_squared_wide`] where a call costs little against the work about it: a
+    /// run's or a row's (its ends, where it starts), a plane's hit. Out of line on the
+    /// Cortex-M0, where the squares are a long sequence whose copies its flash does not hold;
+    /// in line elsewhere.
     #[cfg_attr(all(target_arch = "arm", not(target_has_atomic = "32")), inline(never))]
     #[cfg_attr(not(all(target_arch = "arm", not(target_has_atomic = "32"))), inline)]
     pub(crate) const fn length_squared_once(self) -> u64 {
