@@ -268,6 +268,17 @@ impl Vec3 {
         self.dot(o)
     }
 
+    /// [`Vec3::dot`] of two unit vectors in a highlight's or a mirror's shading: on the Cortex-M0 through [`Vec3::dot_once`]'s one copy, whose
+    /// split products cost less there than the 64-bit sum; in line elsewhere.
+    #[inline(always)]
+    pub(crate) const fn dot_units(self, o: Vec3) -> Fx {
+        if fx::NO_LONG_MULTIPLY {
+            self.dot_once(o)
+        } else {
+            self.dot(o)
+        }
+    }
+
     /// [`Vec3::cross`], out of line: for the work of a frame or a row, as [`Vec3::dot_once`].
     #[inline(never)]
     pub(crate) const fn cross_once(self, o: Vec3) -> Vec3 {

@@ -386,7 +386,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
                 let Some(half) = v.try_normalize() else {
                     return;
                 };
-                let s = normal.dot(half).max(Fx::ZERO).min(Fx::ONE);
+                let s = normal.dot_units(half).max(Fx::ZERO).min(Fx::ONE);
                 // Below the material's threshold the power is 0, and so is the highlight.
                 if s.to_bits() >= i32::from(material.highlight_from) {
                     let power = powi(s, material.shininess);
@@ -732,6 +732,6 @@ fn add(sum: &mut Linear, weight: Fx, c: Linear) {
 /// For unit `d` and `n` it is never zero (it has the length of `d`); should rounding ever make
 /// it so, the mirror sees the background, as an escaping ray does.
 fn mirror(dir: Vec3, normal: Vec3) -> Option<Vec3> {
-    let along = normal.scale(dir.dot(normal).saturating_mul_int(2));
+    let along = normal.scale(dir.dot_units(normal).saturating_mul_int(2));
     (dir - along).try_normalize()
 }
