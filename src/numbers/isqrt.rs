@@ -1,7 +1,7 @@
 //! The exact integer square root, kept in one place so that it can be swapped by measurement.
 
 use crate::numbers::fx::{top_word, wide_mul_u32};
-use crate::numbers::reciprocal::{rsqrt, rsqrt_unit, rsqrt_unit_in_line};
+use crate::numbers::reciprocal::{rsqrt, rsqrt_unit_in_line};
 
 /// `floor(sqrt(x))` for every `u64`, exactly.
 ///
@@ -25,6 +25,10 @@ pub const fn isqrt(x: u64) -> u64 {
     if x < 2 {
         return x;
     }
+    // Below 2⁴⁴, where every sphere test's root lies, in 32-bit words.
+    if x < 1 << 44 {
+        return root_below_two_to_the_44(x) as u64;
+    }
     // The root is below 2³², and so, once clamped there, is the estimate.
     let estimate = estimate(x);
     let mut r = if estimate > u32::MAX as u64 {
@@ -32,10 +36,6 @@ pub const fn isqrt(x: u64) -> u64 {
     } else {
         estimate as u32
     };
-    // Below 2⁴⁴, where every sphere test's root lies, in 32-bit words.
-    if x < 1 << 44 {
-        return steps_below_two_to_the_44(x, r) as u64;
-    }
     // The whole steps go by the residual `x − r²`: `(r + 1)² ≤ x` is `x − r² > 2r`, and a
     // step moves it by `2r + 1`. The estimate is within 8 of the root, so the residual is
     // far inside an `i64`. At `r = 2³² − 1` the residual is at most `2r`, so `r` never steps
@@ -56,14 +56,15 @@ pub const fn isqrt(x: u64) -> u64 {
     r as u64
 }
 
-/// [`isqrt`]'s whole steps for `2 ≤ x < 2⁴⁴` from an estimate `r` within 2⁸ of the root, in
-/// 32-bit words: the residual `x − r²` lies within ±2³¹ (within about ±2²⁶ for the estimate's
-/// 4), so taken modulo 2³² it is exact.
+/// [`isqrt`] for `2 ≤ x < 2⁴⁴`: its estimate, below 2²² and within 4 of the root, and its
+/// whole steps in 32-bit words: the residual `x − r²` lies within ±2³¹ (within about ±2²⁶ for
+/// the estimate's 4), so taken modulo 2³² it is exact.
 #[inline(always)]
-const fn steps_below_two_to_the_44(x: u64, mut r: u32) -> u32 {
+const fn root_below_two_to_the_44(x: u64) -> u32 {
+    let mut r = estimate(x) as u32;
     debug_assert!(
         x >= 2 && x < 1 << 44 && r.abs_diff(x.isqrt() as u32) <= 1 << 8,
-        "steps_below_two_to_the_44: x out of range, or the estimate far from the root"
+        "root_below_two_to_the_44: x out of range, or the estimate far from the root"
     );
     let mut residual = (x as u32).wrapping_sub(r.wrapping_mul(r)) as i32;
     while residual < 0 {
@@ -91,7 +92,7 @@ pub(crate) const fn isqrt_in_line(x: u64) -> u64 {
 #[inline(always)]
 const fn in_line_by<const IN_LINE: bool>(x: u64) -> u64 {
     if IN_LINE && x >= 2 && x < 1 << 44 {
-        return steps_below_two_to_the_44(x, estimate(x) as u32) as u64;
+        return root_below_two_to_the_44(x) as u64;
     }
     isqrt(x)
 }
@@ -108,7 +109,7 @@ const fn root_and_mantissa(x: u64) -> (u32, u32, u32) {
     if x < 1 << 44 {
         return rsqrt_unit_in_line(x);
     }
-    let (y, half) = if x < 1 << 44 { rsqrt_unit(x) } else { rsqrt(x) };
+    let (y, half) = rsqrt(x);
     (y, half, top_word(x, 2 * half))
 }
 
