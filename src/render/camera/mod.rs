@@ -480,20 +480,15 @@ impl Camera {
         // `forward` at most 16 384 (raw 2³⁰), so each sum is below 2⁵⁷.
         // On the screen (and for a few thousand pixels about it) the offsets fit 32 bits: the
         // products of two `i32`s, as the work of a row takes them (`fx::wide_mul_once`).
-        let (small, kx32, ky32) = (
-            kx == kx as i32 as i64 && ky == ky as i32 as i64,
-            kx as i32,
-            ky as i32,
-        );
-        let c = |f: Fx, r: Fx, d: Fx| {
+        let small = kx == kx as i32 as i64 && ky == ky as i32 as i64;
+        let times = |a: Fx, k: i64| {
             if small {
-                f.to_bits() as i64 * denom
-                    + fx::wide_mul_once(r.to_bits(), kx32)
-                    + fx::wide_mul_once(d.to_bits(), ky32)
+                fx::wide_mul_once(a.to_bits(), k as i32)
             } else {
-                f.to_bits() as i64 * denom + r.to_bits() as i64 * kx + d.to_bits() as i64 * ky
+                a.to_bits() as i64 * k
             }
         };
+        let c = |f: Fx, r: Fx, d: Fx| f.to_bits() as i64 * denom + times(r, kx) + times(d, ky);
         (
             [
                 c(self.forward.x, self.right.x, self.down.x),
