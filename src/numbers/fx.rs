@@ -40,7 +40,7 @@ pub(crate) const NO_LONG_MULTIPLY: bool =
 pub(crate) const NO_DIVIDE: bool = NO_LONG_MULTIPLY;
 
 /// Chips without a count-leading-zeros instruction: ARMv6-M, and RV32 without Zbb.
-const NO_CLZ: bool = cfg!(any(
+pub(crate) const NO_CLZ: bool = cfg!(any(
     all(target_arch = "arm", not(target_has_atomic = "32")),
     all(target_arch = "riscv32", not(target_feature = "zbb"))
 ));

@@ -114,6 +114,22 @@ pub(crate) const fn rsqrt_unit_in_line(s: u64) -> (u32, u32, u32) {
     debug_assert!(s >= 1, "rsqrt: zero argument");
     // μ = m · 2⁻³², s scaled by 2^(32 − p) with p even and s ≥ 2^(p−2); half = p / 2.
     let (m, half) = fx::even_top_word(s);
+    (interpolated(m), half, m)
+}
+
+/// [`rsqrt_unit_in_line`] for one of a run of arguments that mostly share their even bit
+/// length, which `length` keeps from one to the next ([`EvenLength`]): the same values.
+#[inline(always)]
+#[must_use]
+pub(crate) fn rsqrt_unit_near(s: u64, length: &mut EvenLength) -> (u32, u32) {
+    debug_assert!(s >= 1, "rsqrt: zero argument");
+    let (m, half) = length.even_top_word(s);
+    (interpolated(m), half)
+}
+
+/// `1/√μ` in Q2.30 for `μ = m · 2⁻³²` in `[¼, 1)`: the table's quadratic interpolation.
+#[inline(always)]
+pub(super) const fn interpolated(m: u32) -> u32 {
     // Knot j below μ, and t, the next 16 bits, the way to knot j + 1 in units of 2⁻¹⁶.
     let t = (m >> 8) & 0xffff;
     let (k0, k1, k2) = knots_from((m >> 24) as usize);
@@ -121,8 +137,69 @@ pub(crate) const fn rsqrt_unit_in_line(s: u64) -> (u32, u32, u32) {
     // The second difference, below 2¹⁹ (1/√μ is convex), times t(1 − t)/2, below 2¹³: the
     // product fits 32 bits. The sums may wrap on the way, and come back exactly.
     let bend = k0.wrapping_add(k2).wrapping_sub(k1.wrapping_mul(2));
-    let y = linear.wrapping_sub((((t * (65536 - t)) >> 17) * bend) >> 16);
-    (y, half, m)
+    linear.wrapping_sub((((t * (65536 - t)) >> 17) * bend) >> 16)
+}
+
+/// The even bit length `p` of the last of a run of reciprocal roots' arguments, where it is 34
+/// to 62, with the shifts that take the mantissa of an argument of that length: a floor's
+/// squared distances to a light, column after column, mostly share it. An argument `s` has it
+/// exactly when its high word lies in `[2^(p−34), 2^(p−32))`, one comparison, and its mantissa
+/// `s >> (p − 32)` is then two shifts of its words: where the chip counts no leading zeros,
+/// that is about twenty instructions fewer than finding the length afresh.
+#[derive(Clone, Copy)]
+pub(crate) struct EvenLength {
+    /// `2^(p−34)` and `3·2^(p−34)`: `high − base < span` holds for the length's high words.
+    base: u32,
+    span: u32,
+    /// `64 − p` and `p − 32`, each 2 to 30.
+    up: u32,
+    down: u32,
+    half: u32,
+}
+
+impl EvenLength {
+    /// No length kept: the first argument finds its own.
+    pub(crate) const NONE: EvenLength = EvenLength {
+        base: 0,
+        span: 0,
+        up: 0,
+        down: 0,
+        half: 0,
+    };
+
+    /// [`fx::even_top_word`]`(x)` for `x ≥ 1`, through the kept length where `x` has it, and
+    /// keeping `x`'s otherwise.
+    #[inline(always)]
+    pub(crate) fn even_top_word(&mut self, x: u64) -> (u32, u32) {
+        // Where the leading zeros are one instruction, finding the length measured shorter
+        // than keeping it.
+        if !fx::NO_CLZ {
+            return fx::even_top_word(x);
+        }
+        self.kept_or_found(x)
+    }
+
+    /// [`EvenLength::even_top_word`] through the kept length, whatever the chip: compiled
+    /// everywhere, so that the host tests check it.
+    #[inline(always)]
+    pub(super) fn kept_or_found(&mut self, x: u64) -> (u32, u32) {
+        let (high, low) = ((x >> 32) as u32, x as u32);
+        if high.wrapping_sub(self.base) < self.span {
+            return ((high << self.up) | (low >> self.down), self.half);
+        }
+        let (top, half) = fx::even_top_word(x);
+        if (17..=31).contains(&half) {
+            let p = 2 * half;
+            *self = EvenLength {
+                base: 1 << (p - 34),
+                span: 3 << (p - 34),
+                up: 64 - p,
+                down: p - 32,
+                half,
+            };
+        }
+        (top, half)
+    }
 }
 
 /// `1/√s` for `s ≥ 1`, as [`rsqrt_unit`], to about 2⁻²⁹: its seed and one Newton step
@@ -233,6 +310,43 @@ mod tests {
         let got = y as f64 / 2f64.powi(30 + shift as i32);
         let exact = 1.0 / (s as f64).sqrt();
         (got / exact - 1.0).abs()
+    }
+
+    /// The kept even length gives `even_top_word`'s mantissa and half length for every
+    /// argument, kept or not: at both sides of every even length's ends (where a length kept
+    /// one too wide or too narrow, or a shift one off, shows), and along runs of random
+    /// arguments of nearby sizes, as a floor's squares come.
+    #[test]
+    fn a_kept_even_length_finds_the_mantissa_the_length_gives() {
+        let mut rng = crate::xorshift::XorShift(0x9e37_79b9_7f4a_7c15);
+        let mut length = EvenLength::NONE;
+        let mut check = |x: u64, length: &mut EvenLength| {
+            assert_eq!(length.kept_or_found(x), fx::even_top_word(x), "{x:#x}");
+        };
+        for p in (2..=64).step_by(2) {
+            let (low, high) = (
+                1u64 << (p - 2),
+                if p == 64 { u64::MAX } else { (1 << p) - 1 },
+            );
+            for x in [low, low + 1, high - 1, high, high / 3 + 1] {
+                // From this length, from the next narrower and wider, and from none.
+                for before in [x, (x >> 2).max(1), x.saturating_mul(4), x / 2 + 1] {
+                    check(before, &mut length);
+                    check(x, &mut length);
+                    check(low - 1 + (low == 1) as u64, &mut length);
+                    check(high.saturating_add(1), &mut length);
+                }
+            }
+        }
+        for _ in 0..20_000 {
+            let bits = 1 + rng.next() % 64;
+            let x = (rng.next() >> (64 - bits)).max(1);
+            for step in [1u64, 1 << 20, 1 << 40] {
+                for k in 0..8 {
+                    check(x.saturating_add(k * step), &mut length);
+                }
+            }
+        }
     }
 
     #[test]

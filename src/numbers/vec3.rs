@@ -4,7 +4,7 @@ use core::ops::{Add, Neg, Sub};
 
 use crate::numbers::fx::{self, Fx};
 use crate::numbers::isqrt::isqrt_once;
-use crate::numbers::reciprocal::{rsqrt_unit, rsqrt_unit_in_line};
+use crate::numbers::reciprocal::{EvenLength, rsqrt_unit, rsqrt_unit_in_line, rsqrt_unit_near};
 
 /// A point or a direction with three Q16.16 components.
 ///
@@ -438,14 +438,16 @@ impl Vec3 {
         }
     }
 
-    /// [`Vec3::unit_component_with_square`] with the reciprocal root in line
-    /// ([`rsqrt_unit_in_line`]), for a loop that takes one a column.
+    /// [`Vec3::unit_component_with_square`] with the reciprocal root in line, for a loop that
+    /// takes one a column, whose squares mostly share their even bit length: kept from one to
+    /// the next in `length` ([`rsqrt_unit_near`]).
     #[inline(always)]
-    pub(crate) const fn unit_component_in_line(c: Fx, square: u64) -> Option<Fx> {
-        match unit_scale::<true>(square) {
-            Some((y, shift)) => Some(unit_part(c, y, shift)),
-            None => None,
+    pub(crate) fn unit_component_near(c: Fx, square: u64, length: &mut EvenLength) -> Option<Fx> {
+        if square == 0 {
+            return None;
         }
+        let (y, half) = rsqrt_unit_near(square, length);
+        Some(unit_part(c, y, 14 + half))
     }
 
     /// The unit vector along `self`, or the zero vector when `self` is zero.
@@ -710,6 +712,9 @@ mod tests {
     #[test]
     fn a_unit_component_alone_is_the_unit_vectors() {
         let mut rng = crate::xorshift::XorShift(0x0c0a_1e55_0000_0001);
+        // One kept length for every vector, as a loop keeps it (and the kept form alone,
+        // which the host would not take otherwise, beside it).
+        let (mut length, mut kept) = (EvenLength::NONE, EvenLength::NONE);
         for i in 0..200_000u32 {
             // Every magnitude within the budget, zero components and the zero vector too.
             let mut next = |bits: u32| ((rng.next() as i64) >> (64 - bits)) as i32 >> (i % 31);
@@ -728,7 +733,16 @@ mod tests {
                 (v.z, unit.map(|u| u.z)),
             ] {
                 assert_eq!(Vec3::unit_component_with_square(c, square), u, "{v:?}");
-                assert_eq!(Vec3::unit_component_in_line(c, square), u, "{v:?}");
+                assert_eq!(
+                    Vec3::unit_component_near(c, square, &mut length),
+                    u,
+                    "{v:?}"
+                );
+                let by_kept = (square != 0).then(|| {
+                    let (m, half) = kept.kept_or_found(square);
+                    unit_part(c, crate::numbers::reciprocal::interpolated(m), 14 + half)
+                });
+                assert_eq!(by_kept, u, "{v:?}");
             }
         }
     }

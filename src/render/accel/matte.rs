@@ -23,7 +23,7 @@
 
 use crate::geometry::plane::{Numerator, Plane, far_reach};
 use crate::numbers::fx::{self, Fx};
-use crate::numbers::reciprocal::Scale;
+use crate::numbers::reciprocal::{EvenLength, Scale};
 use crate::numbers::vec3::Vec3;
 use crate::render::accel::row_rays::RowSquares;
 use crate::render::accel::shadow_columns::RunLine;
@@ -231,10 +231,13 @@ impl<const N: usize, const L: usize> Scene<N, L> {
                 Offsets::new(walk.scale, axis.across(walk.towards), axis.across(step));
             let c = from_eye.minus(offsets.now()).z;
             let c_square = Vec3::new(Fx::ZERO, Fx::ZERO, c).length_squared_wide();
+            // Neighbouring columns' squares mostly share their bit length: kept from one to
+            // the next.
+            let mut length = EvenLength::NONE;
             for pixel in out.iter_mut() {
                 let e = from_eye.minus(offsets.now());
                 let square = Vec3::new(e.x, e.y, Fx::ZERO).length_squared_wide() + c_square;
-                let diffuse = match axis.cosine_in_line(c, square) {
+                let diffuse = match axis.cosine_near(c, square, &mut length) {
                     Some(cos) => fx::mul_unit(light.intensity, cos),
                     None => Fx::ZERO,
                 };
@@ -356,10 +359,11 @@ impl Axis {
         (cos > Fx::ZERO).then_some(cos)
     }
 
-    /// [`Axis::cosine_of`] with the reciprocal root in line.
+    /// [`Axis::cosine_of`] with the reciprocal root in line, for one of a run of squares that
+    /// mostly share their bit length, kept in `length`.
     #[inline(always)]
-    fn cosine_in_line(self, c: Fx, square: u64) -> Option<Fx> {
-        let c = Vec3::unit_component_in_line(c, square)?;
+    fn cosine_near(self, c: Fx, square: u64, length: &mut EvenLength) -> Option<Fx> {
+        let c = Vec3::unit_component_near(c, square, length)?;
         let cos = if self.negative { -c } else { c };
         (cos > Fx::ZERO).then_some(cos)
     }
