@@ -320,7 +320,7 @@ mod tests {
     fn a_kept_even_length_finds_the_mantissa_the_length_gives() {
         let mut rng = crate::xorshift::XorShift(0x9e37_79b9_7f4a_7c15);
         let mut length = EvenLength::NONE;
-        let mut check = |x: u64, length: &mut EvenLength| {
+        let check = |x: u64, length: &mut EvenLength| {
             assert_eq!(length.kept_or_found(x), fx::even_top_word(x), "{x:#x}");
         };
         for p in (2..=64).step_by(2) {
