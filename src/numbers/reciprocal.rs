@@ -103,10 +103,10 @@ pub(crate) const fn rsqrt_unit(s: u64) -> (u32, u32) {
 
 /// [`rsqrt_unit`], in line wherever it is called, and the mantissa `m` it looked up (`s`'s
 /// top 32 bits at an even bit length, `μ` in Q0.32): for the few callers that take a root a
-/// pixel or a column with many values live (a floor's cosine, a light's direction, the sphere
-/// test's integer root, whose estimate multiplies the root by that mantissa), where a call
-/// would move those values out of the registers it clobbers. Each caller says on which chips
-/// it takes it.
+/// pixel with many values live (a light's direction, the sphere test's integer root, whose
+/// estimate multiplies the root by that mantissa), where a call would move those values out
+/// of the registers it clobbers. Each caller says on which chips it takes it; a floor's
+/// columns take it through [`rsqrt_unit_near`].
 #[inline(always)]
 #[must_use]
 pub(crate) const fn rsqrt_unit_in_line(s: u64) -> (u32, u32, u32) {
@@ -330,8 +330,16 @@ mod tests {
             );
             for x in [low, low + 1, high - 1, high, high / 3 + 1] {
                 // From this length, from the next narrower and wider, and from none.
-                for before in [x, (x >> 2).max(1), x.saturating_mul(4), x / 2 + 1] {
-                    check(before, &mut length);
+                for before in [
+                    Some(x),
+                    Some((x >> 2).max(1)),
+                    Some(x.saturating_mul(4)),
+                    None,
+                ] {
+                    match before {
+                        Some(before) => check(before, &mut length),
+                        None => length = EvenLength::NONE,
+                    }
                     check(x, &mut length);
                     check(low - 1 + (low == 1) as u64, &mut length);
                     check(high.saturating_add(1), &mut length);
