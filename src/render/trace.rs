@@ -416,19 +416,37 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     // In line on every chip, in the pixel's shading and the plain path's.
     #[inline(always)]
     fn matte_diffuse(&self, at: &Surface, on_plane: bool, plane_shadowers: &[u32; L]) -> Fx {
-        let diffuse_from = |light_index: usize, light: &Light| {
-            let among = self.shadow_set(light_index, on_plane, plane_shadowers);
-            match self.reaches(light_index, light, at, among) {
-                Some((_, cos)) => fx::mul_unit(light.intensity, cos),
-                None => Fx::ZERO,
-            }
-        };
-        // One light, the common case on a small screen, without a loop to set up.
+        // One light, the common case on a small screen, without a loop to set up. Its term
+        // written apart from the loop's, as on the Armv7-M cores and RV32, a sphere pixel need
+        // not store what the loop's closure takes along; the Cortex-M0 shares the loop's,
+        // whose second copy its flash does not hold.
+        if let ([only], false) = (self.lights(), fx::NO_LONG_MULTIPLY) {
+            return self.diffuse_from(0, only, at, on_plane, plane_shadowers);
+        }
+        let diffuse_from =
+            |i: usize, light: &Light| self.diffuse_from(i, light, at, on_plane, plane_shadowers);
         match self.lights() {
             [only] => diffuse_from(0, only),
             lights => (lights.iter().enumerate()).fold(Fx::ZERO, |sum, (i, light)| {
                 sum.saturating_add(diffuse_from(i, light))
             }),
+        }
+    }
+
+    /// Light `light_index`'s (`light`'s) term of [`Scene::matte_diffuse`].
+    #[inline]
+    fn diffuse_from(
+        &self,
+        light_index: usize,
+        light: &Light,
+        at: &Surface,
+        on_plane: bool,
+        plane_shadowers: &[u32; L],
+    ) -> Fx {
+        let among = self.shadow_set(light_index, on_plane, plane_shadowers);
+        match self.reaches(light_index, light, at, among) {
+            Some((_, cos)) => fx::mul_unit(light.intensity, cos),
+            None => Fx::ZERO,
         }
     }
 
