@@ -91,9 +91,9 @@
 //! | chip | [`Viewport::render`], one-row buffer | `picture::<Rgb565, 160>()?.draw` |
 //! | --- | ---: | ---: |
 //! | Cortex-M0 (`thumbv6m-none-eabi`) | 2 972 / 3 724 | 3 468 / 4 220 |
-//! | Cortex-M3 (`thumbv7m-none-eabi`) | 2 440 / 3 048 | 2 944 / 3 552 |
-//! | Cortex-M4F (`thumbv7em-none-eabihf`) | 2 456 / 3 068 | 2 960 / 3 572 |
-//! | RV32IMC (`riscv32imc-unknown-none-elf`) | 2 156 / 2 908 | 2 652 / 3 404 |
+//! | Cortex-M3 (`thumbv7m-none-eabi`) | 2 432 / 3 040 | 2 936 / 3 544 |
+//! | Cortex-M4F (`thumbv7em-none-eabihf`) | 2 440 / 3 052 | 2 944 / 3 556 |
+//! | RV32IMC (`riscv32imc-unknown-none-elf`) | 2 156 / 2 892 | 2 652 / 3 388 |
 //!
 //! The classic scene, with mirrors, glass, highlights and three lights' shadows, takes the
 //! deepest path; a picture adds its row buffer (480 bytes at 160 columns) and a few words to
