@@ -416,10 +416,10 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     // In line on every chip, in the pixel's shading and the plain path's.
     #[inline(always)]
     fn matte_diffuse(&self, at: &Surface, on_plane: bool, plane_shadowers: &[u32; L]) -> Fx {
-        // One light, the common case on a small screen, without a loop to set up. Its term
-        // written apart from the loop's, as on the Armv7-M cores and RV32, a sphere pixel need
-        // not store what the loop's closure takes along; the Cortex-M0 shares the loop's,
-        // whose second copy its flash does not hold.
+        // One light, the common case on a small screen, without a loop to set up. On the
+        // Armv7-M cores and RV32 its term is written apart from the loop's, so that a sphere
+        // pixel does not store what the loop's closure takes along; the Cortex-M0 shares the
+        // loop's closure, as a second copy is more than its flash holds.
         if let ([only], false) = (self.lights(), fx::NO_LONG_MULTIPLY) {
             return self.diffuse_from(0, only, at, on_plane, plane_shadowers);
         }
