@@ -145,7 +145,9 @@ pub(super) const fn interpolated(m: u32) -> u32 {
 /// squared distances to a light, column after column, mostly share it. An argument `s` has it
 /// exactly when its high word lies in `[2^(p−34), 2^(p−32))`, one comparison, and its mantissa
 /// `s >> (p − 32)` is then two shifts of its words: where the chip counts no leading zeros,
-/// that is about twenty instructions fewer than finding the length afresh.
+/// that is about twenty instructions fewer than finding the length afresh. The bounds and
+/// shifts are kept beside the half length rather than derived from it, so that a column whose
+/// square has the kept length takes no arithmetic for them.
 #[derive(Clone, Copy)]
 pub(crate) struct EvenLength {
     /// `2^(p−34)` and `3·2^(p−34)`: `high − base < span` holds for the length's high words.

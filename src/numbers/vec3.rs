@@ -268,8 +268,9 @@ impl Vec3 {
         self.dot(o)
     }
 
-    /// [`Vec3::dot`] of two unit vectors in a highlight's or a mirror's shading: on the Cortex-M0 through [`Vec3::dot_once`]'s one copy, whose
-    /// split products cost less there than the 64-bit sum; in line elsewhere.
+    /// [`Vec3::dot`] of two unit vectors in a highlight's or a mirror's shading: on the
+    /// Cortex-M0 through [`Vec3::dot_once`]'s one copy, whose split products cost less there
+    /// than the 64-bit sum; in line elsewhere.
     #[inline(always)]
     pub(crate) const fn dot_units(self, o: Vec3) -> Fx {
         if fx::NO_LONG_MULTIPLY {
@@ -447,7 +448,8 @@ impl Vec3 {
             return None;
         }
         let (y, half) = rsqrt_unit_near(square, length);
-        Some(unit_part(c, y, 14 + half))
+        let (y, shift) = unit_factor(y, half);
+        Some(unit_part(c, y, shift))
     }
 
     /// The unit vector along `self`, or the zero vector when `self` is zero.
@@ -467,14 +469,20 @@ const fn unit_scale<const IN_LINE: bool>(square: u64) -> Option<(u32, u32)> {
     if square == 0 {
         return None;
     }
-    // 1/‖self‖ in units of 2⁻¹⁶ is y · 2⁻⁽³⁰⁺ˢʰⁱᶠᵗ⁾ · 2¹⁶.
-    let (y, shift) = if IN_LINE {
-        let (y, shift, _) = rsqrt_unit_in_line(square);
-        (y, shift)
+    let (y, half) = if IN_LINE {
+        let (y, half, _) = rsqrt_unit_in_line(square);
+        (y, half)
     } else {
         rsqrt_unit(square)
     };
-    Some((y, 14 + shift))
+    Some(unit_factor(y, half))
+}
+
+/// [`unit_scale`]'s factor and shift from a reciprocal root `1/√s ≈ y · 2^−(30 + half)` of the
+/// squared length `s`: `1/‖v‖` in units of 2⁻¹⁶ is `y · 2^−(30 + half) · 2¹⁶`.
+#[inline(always)]
+const fn unit_factor(y: u32, half: u32) -> (u32, u32) {
+    (y, 14 + half)
 }
 
 /// The unit vector's component along `c` (a component of `v`), from [`unit_scale`]'s

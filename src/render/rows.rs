@@ -310,6 +310,7 @@ fn cast_run(
     let mut square = RowSquares::new(towards, camera.column_step());
     // On RV32 one ray serves the run, its direction replaced each column, so that the eye is
     // not stored again with each; elsewhere a ray made whole each column came out shorter.
+    // Two loops, as the choice made inside one changed the other chips' code as well.
     if cfg!(target_arch = "riscv32") {
         let mut ray = Ray::along(camera.eye(), Vec3::ZERO, towards);
         for col in cols {

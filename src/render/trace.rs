@@ -423,12 +423,12 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         if let ([only], false) = (self.lights(), fx::NO_LONG_MULTIPLY) {
             return self.diffuse_from(0, only, at, on_plane, plane_shadowers);
         }
-        let diffuse_from =
+        let of_light =
             |i: usize, light: &Light| self.diffuse_from(i, light, at, on_plane, plane_shadowers);
         match self.lights() {
-            [only] => diffuse_from(0, only),
+            [only] => of_light(0, only),
             lights => (lights.iter().enumerate()).fold(Fx::ZERO, |sum, (i, light)| {
-                sum.saturating_add(diffuse_from(i, light))
+                sum.saturating_add(of_light(i, light))
             }),
         }
     }

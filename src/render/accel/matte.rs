@@ -354,16 +354,20 @@ impl Axis {
     /// length is `square`.
     #[inline(always)]
     fn cosine_of(self, c: Fx, square: u64) -> Option<Fx> {
-        let c = Vec3::unit_component_with_square(c, square)?;
-        let cos = if self.negative { -c } else { c };
-        (cos > Fx::ZERO).then_some(cos)
+        self.facing(Vec3::unit_component_with_square(c, square)?)
     }
 
     /// [`Axis::cosine_of`] with the reciprocal root in line, for one of a run of squares that
     /// mostly share their bit length, kept in `length`.
     #[inline(always)]
     fn cosine_near(self, c: Fx, square: u64, length: &mut EvenLength) -> Option<Fx> {
-        let c = Vec3::unit_component_near(c, square, length)?;
+        self.facing(Vec3::unit_component_near(c, square, length)?)
+    }
+
+    /// The cosine with the facing normal of a unit vector whose component along the axis is
+    /// `c`: `None` where it is not positive.
+    #[inline(always)]
+    fn facing(self, c: Fx) -> Option<Fx> {
         let cos = if self.negative { -c } else { c };
         (cos > Fx::ZERO).then_some(cos)
     }
