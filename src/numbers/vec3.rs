@@ -748,7 +748,8 @@ mod tests {
                 );
                 let by_kept = (square != 0).then(|| {
                     let (m, half) = kept.kept_or_found(square);
-                    unit_part(c, crate::numbers::reciprocal::interpolated(m), 14 + half)
+                    let (y, shift) = unit_factor(crate::numbers::reciprocal::interpolated(m), half);
+                    unit_part(c, y, shift)
                 });
                 assert_eq!(by_kept, u, "{v:?}");
             }
