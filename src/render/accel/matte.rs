@@ -119,7 +119,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
             at.point = point;
             let mut diffuse = Fx::ZERO;
             for (i, (light, &test)) in lights.iter().zip(&shadow_sets).enumerate() {
-                if let Some((_, cos)) = self.reaches(i, light, &at, test) {
+                if let Some((_, cos)) = self.reaches_among(i, light, &at, test) {
                     diffuse = diffuse.saturating_add(fx::mul_unit(light.intensity, cos));
                 }
             }

@@ -18,6 +18,7 @@ pub(crate) mod cull;
 pub(crate) mod matte;
 pub(crate) mod row_rays;
 pub(crate) mod runs;
+pub(crate) mod shade;
 pub(crate) mod shadow_columns;
 pub(crate) mod shadow_rows;
 pub(crate) mod sky;

@@ -242,7 +242,7 @@ mod tests {
                 let shadow = Ray::new_unchecked(hit.hit.point, to_light.try_normalize().unwrap());
                 for ball in 1..5 {
                     let only = 1 << ball;
-                    if scene.occluded(shadow.origin(), shadow.dir(), d2, 0, 0, only) {
+                    if scene.occluded_among(shadow.origin(), shadow.dir(), d2, 0, 0, only) {
                         assert_ne!(set & only, 0, "row {row}, column {col}, ball {ball}");
                     }
                 }

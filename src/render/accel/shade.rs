@@ -1,0 +1,203 @@
+//! The first surface's light for the rows: [`Scene::shade`] with each shadow ray trying only
+//! the objects that can block it, and a highlight formed only where it is not 0.
+//!
+//! A shadow ray towards light `i` from object `j` tries only the objects that can shadow `j`
+//! from `i` (`scene/shadowers.rs`), and of those, on a plane, only the ones that can shadow
+//! the row's hits on it (`accel/shadow_rows.rs`); it skips a sphere whose cone from the light
+//! it lies outside (`scene/cone.rs`). Every set holds each object that can block the ray, and
+//! a cone each ray that can meet its sphere, so the answer is the brute-force one. A highlight
+//! whose cosine must come out below the material's least lit one (`render/highlight.rs`), or
+//! does, is 0 without its half vector or its power. So a pixel here is bit for bit the plain path's.
+
+use crate::geometry::Shape;
+use crate::geometry::ray::Ray;
+use crate::numbers::fx::{self, Fx};
+use crate::numbers::vec3::Vec3;
+use crate::render::highlight::highlight_below;
+use crate::render::trace::{Surface, scaled_channel};
+use crate::scene::hit::SceneHit;
+use crate::scene::light::Light;
+use crate::scene::linear::{powi, rgb_of};
+use crate::scene::{Material, Object, Rgb, Scene};
+
+impl<const N: usize, const L: usize> Scene<N, L> {
+    /// [`Scene::shade`] for a ray from the eye whose first hit is `hit`, where a hit on a plane
+    /// need only try the objects of `plane_shadowers[light]` (bit `i` for object `i`) for its
+    /// shadow rays towards each light.
+    pub(crate) fn pixel_among(
+        &self,
+        ray: &Ray,
+        hit: Option<SceneHit>,
+        plane_shadowers: &[u32; L],
+    ) -> Rgb {
+        let Some((h, object)) = hit.and_then(|h| Some((h, self.objects().get(h.object)?))) else {
+            return self.shade(ray, None);
+        };
+        let at = Surface::of(&h);
+        let on_plane = matches!(object.shape, Shape::Plane(_));
+        let among = |light: usize| self.shadow_set(light, on_plane, plane_shadowers);
+        let material = &object.material;
+        let (mut diffuse, mut specular) = (Fx::ZERO, Fx::ZERO);
+        for (i, light) in self.lights().iter().enumerate() {
+            let Some((l, cos)) = self.reaches_among(i, light, &at, among(i)) else {
+                continue;
+            };
+            diffuse = diffuse.saturating_add(fx::mul_unit(light.intensity, cos));
+            if material.specular > Fx::ZERO {
+                let term = highlight_if_lit(material, light, at.normal, l, ray.dir);
+                specular = specular.saturating_add(term);
+            }
+        }
+        let colour = object.colour_at(at.point);
+        if material.is_plain_matte() {
+            return self.matte_pixel(material, diffuse, colour);
+        }
+        let light = self.with_highlight(self.lit(material, diffuse, colour), material, specular);
+        rgb_of(self.followed(light, ray.dir, &h))
+    }
+
+    /// [`Scene::reaches`] for light `light_index` (`light`), whose shadow ray tries only the
+    /// objects of `among` (see [`Scene::occluded_among`]), and none where `among` is `None`
+    /// (shadows off, or nothing that can block it).
+    pub(crate) fn reaches_among(
+        &self,
+        light_index: usize,
+        light: &Light,
+        at: &Surface,
+        among: Option<u32>,
+    ) -> Option<(Vec3, Fx)> {
+        let towards = self.towards_light(light, at)?;
+        if let Some(among) = among
+            && self.occluded_among(
+                at.point,
+                towards.l,
+                towards.distance_squared,
+                at.index,
+                light_index,
+                among,
+            )
+        {
+            return None;
+        }
+        Some((towards.l, towards.cos))
+    }
+
+    /// [`Scene::occluded`] for a shadow ray towards light `light`, made only for the objects
+    /// that come to the whole test: it tries only the objects that can shadow object
+    /// `leaving` from that light (`Scene::shadowers`) and are in `among` (bit `i` for object
+    /// `i`, which must hold every object that can block the ray in scenes of up to 32
+    /// objects), and skips the spheres outside their [`ShadowCone`](crate::scene::cone::ShadowCone).
+    pub(crate) fn occluded_among(
+        &self,
+        from: Vec3,
+        dir: Vec3,
+        distance_squared: u64,
+        leaving: usize,
+        light: usize,
+        among: u32,
+    ) -> bool {
+        let Some(cones) = self.cones().get(light) else {
+            // Not one of the scene's lights: no cones to go by.
+            return self.occluded(from, dir, distance_squared, leaving);
+        };
+        let objects = self.objects();
+        let may_block = |index: usize| {
+            let (Some(object), Some(cone)) = (objects.get(index), cones.get(index)) else {
+                return false;
+            };
+            index != leaving
+                && cone.may_block(dir, distance_squared)
+                && blocks(object, from, dir, distance_squared)
+        };
+        match self.walked(leaving, light) {
+            // Only the objects that can shadow the one the ray leaves, most often none or one:
+            // walked by their bits.
+            Some(set) => {
+                let mut rest = set & among;
+                while rest != 0 {
+                    let index = rest.trailing_zeros() as usize;
+                    rest &= rest - 1;
+                    if may_block(index) {
+                        return true;
+                    }
+                }
+                false
+            }
+            // In scenes of more than 32 objects every one is tried.
+            None => (0..objects.len()).any(may_block),
+        }
+    }
+
+    /// The objects (bit `i` for object `i`) that [`Scene::occluded_among`] walks for a shadow
+    /// ray from object `leaving` towards light `light`, before they are met with its `among`:
+    /// those that can shadow `leaving` from it. `None` where every object is tried: scenes
+    /// of more than 32 objects, or a light that is not the scene's.
+    pub(crate) fn walked(&self, leaving: usize, light: usize) -> Option<u32> {
+        let set = self.shadowers().get(light).and_then(|s| s.get(leaving));
+        set.copied().filter(|_| self.objects().len() <= 32)
+    }
+
+    /// The objects a shadow ray towards light `light_index` tries from a surface (a plane's
+    /// row set where `on_plane`, every object otherwise), or `None` where shadows are off.
+    fn shadow_set(
+        &self,
+        light_index: usize,
+        on_plane: bool,
+        plane_shadowers: &[u32; L],
+    ) -> Option<u32> {
+        self.shadows()
+            .then(|| match plane_shadowers.get(light_index) {
+                Some(&set) if on_plane => set,
+                _ => !0,
+            })
+    }
+
+    /// [`Scene::matte_pixel`], written into `pixel` a channel at a time, for the loops of
+    /// matte pixels: up to a brightness of 1, the common case, no channel passes 255
+    /// (255·2¹⁶ + 2¹⁵ is below 256·2¹⁶), so there is nothing to hold.
+    pub(crate) fn paint_matte(
+        &self,
+        material: &Material,
+        diffuse: Fx,
+        colour: Rgb,
+        pixel: &mut Rgb,
+    ) {
+        let k = self.brightness(material, diffuse).to_bits();
+        // Above 1 (and below 0, which as a `u32` is above too) the plain form holds them.
+        if (k as u32) > 1 << 16 {
+            *pixel = self.matte_pixel(material, diffuse, colour);
+            return;
+        }
+        let channel = |c: u8| scaled_channel(c, k as u32) as u8;
+        pixel.r = channel(colour.r);
+        pixel.g = channel(colour.g);
+        pixel.b = channel(colour.b);
+    }
+}
+
+/// [`highlight`], 0 without its half vector or its power where its cosine must come out below
+/// the material's least lit one ([`highlight_below`]) or does, where the power is 0.
+fn highlight_if_lit(material: &Material, light: &Light, normal: Vec3, l: Vec3, view: Vec3) -> Fx {
+    let v = l.minus(view); // two unit vectors: no saturation to check
+    if highlight_below(normal, v, material.highlight_from) {
+        return Fx::ZERO;
+    }
+    let Some(half) = v.try_normalize() else {
+        return Fx::ZERO;
+    };
+    let s = normal.dot_units(half).max(Fx::ZERO).min(Fx::ONE);
+    if s.to_bits() < i32::from(material.highlight_from) {
+        return Fx::ZERO;
+    }
+    fx::mul_fits(light.intensity, powi(s, material.shininess))
+}
+
+/// Whether `object` lies on the shadow ray from `from` along the unit `dir` nearer than
+/// `√distance_squared`. The ray is made here, for the few objects that come to the whole test:
+/// most shadow rays end at an empty set or at the cones, where a ray made first would be
+/// stored for nothing.
+fn blocks(object: &Object, from: Vec3, dir: Vec3, distance_squared: u64) -> bool {
+    object
+        .shape
+        .blocks(&Ray::new_unchecked(from, dir), distance_squared)
+}
