@@ -87,6 +87,7 @@
 #![deny(missing_docs, rustdoc::broken_intra_doc_links)]
 
 mod check;
+mod chip;
 #[cfg(feature = "demo")]
 pub mod demo;
 pub mod draw;

@@ -180,7 +180,6 @@ impl Plane {
     /// ```
     #[must_use]
     // Out of line: secondary rays, shadow rays and the plain path share one copy.
-    #[inline(never)]
     pub fn intersect(&self, ray: &Ray) -> Option<Hit> {
         self.hit_from(ray, &self.numerator(ray.origin))
     }
@@ -194,7 +193,7 @@ impl Plane {
     /// `−n·(p_r − p0)`, the numerator of Eq. 4.2, exactly in Q32.32: it depends on the
     /// ray's origin alone, so rays that share one (a camera's) can share it.
     pub(crate) fn numerator(&self, origin: Vec3) -> Numerator {
-        let value = -self.normal.dot_wide_once(origin - self.point);
+        let value = -self.normal.dot_wide_exact(origin - self.point);
         Numerator {
             value,
             mantissa: if value == 0 {
@@ -207,10 +206,9 @@ impl Plane {
 
     /// [`Plane::intersect`] given `num`, which must be `self.numerator(ray.origin)`. Out of
     /// line: the plain path, the run loops and the shadow rays share one copy.
-    #[inline(never)]
     pub(crate) fn hit_from(&self, ray: &Ray, num: &Numerator) -> Option<Hit> {
-        let square = ray.w.length_squared_once();
-        let scale = self.scale_along(num, self.normal.dot_wide_once(ray.w))?;
+        let square = ray.w.length_squared_wide();
+        let scale = self.scale_along(num, self.normal.dot_wide_exact(ray.w))?;
         if !within_far(scale, square) {
             return None;
         }
@@ -283,7 +281,6 @@ const FAR_SQUARED_BITS: i32 = 2 * (FAR.to_bits().trailing_zeros() as i32);
 /// with no fractional bits (`shift ≤ 0`, `s ≥ 2²⁹`) reaches nothing: it would need `‖w‖`
 /// below 2⁻¹⁶, shorter than any ray's direction. Out of line: it is rarely needed per ray
 /// (see [`within_far`]).
-#[inline(never)]
 pub(crate) fn far_reach(scale: Scale) -> u64 {
     if scale.shift <= 0 {
         return 0;
@@ -329,8 +326,8 @@ pub(crate) fn offset(scale: Scale, w: Vec3) -> Vec3 {
 #[inline]
 pub(crate) fn distance(scale: Scale, w: Vec3, dir: Vec3) -> Fx {
     // Both exact: |w·u| < 2⁴⁷ (w within 2³⁰ a component), |1 − u·u| < 2¹⁹ in Q32.32.
-    let along = w.dot_wide_once(dir);
-    let excess = (1i64 << 32) - dir.length_squared_once() as i64;
+    let along = w.dot_wide_exact(dir);
+    let excess = (1i64 << 32) - dir.length_squared_wide() as i64;
     let along = along + (((along >> 16) * excess) >> 17);
     if along <= 0 || !(1..64).contains(&scale.shift) {
         return Fx::ZERO;

@@ -51,7 +51,6 @@ impl Shape {
     /// costs no more (a plane's point is found before its distance). A sphere's hit is made
     /// for the nearest object only, by [`Shape::sphere_hit_at`]. Out of line: the nearest-hit
     /// loops share one copy.
-    #[inline(never)]
     pub(crate) fn meet(&self, ray: &Ray) -> Option<(Fx, Option<Hit>)> {
         match self {
             Shape::Plane(plane) => {

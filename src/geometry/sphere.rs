@@ -7,7 +7,7 @@ use crate::error::{Error, Quantity};
 use crate::geometry::hit::Hit;
 use crate::geometry::ray::Ray;
 use crate::numbers::fx::{self, FAR, FRAC, Fx};
-use crate::numbers::isqrt::{isqrt, isqrt_in_line};
+use crate::numbers::isqrt::isqrt;
 use crate::numbers::vec3::Vec3;
 
 /// A near crossing at least this far ahead (a quarter of a unit) proves the origin outside
@@ -99,7 +99,6 @@ impl Sphere {
 
     /// `r²` in Q32.32, exactly: kept where a 64-bit product is a long sequence, formed where
     /// it is a single instruction, which costs less than loading two words.
-    #[inline(always)]
     const fn radius_squared(&self) -> u64 {
         if fx::NO_LONG_MULTIPLY {
             let [high, low] = self.radius_squared;
@@ -167,10 +166,6 @@ impl Sphere {
     // In line (with `hit_at`) on every chip but the Cortex-M0: the calls, and the hit handed
     // back through memory, cost a sphere pixel more than its copies cost flash. On the M0,
     // whose flash the firmware is held to, one copy.
-    #[cfg_attr(
-        not(all(target_arch = "arm", not(target_has_atomic = "32"))),
-        inline(always)
-    )]
     pub(crate) fn hit_distance(&self, ray: &Ray) -> Option<Fx> {
         self.hit_distance_within(ray, FAR)
     }
@@ -182,7 +177,6 @@ impl Sphere {
     /// one dot product.
     // In line on every chip: on the Cortex-M0 too, where `hit_distance` keeps one copy for
     // its callers and the row's nearest hit from the eye (`Scene::shoot_from_eye`) its own.
-    #[inline(always)]
     pub(crate) fn hit_distance_within(&self, ray: &Ray, bound: Fx) -> Option<Fx> {
         debug_assert!(bound <= FAR, "hit_distance_within: a bound past FAR");
         let to_centre = self.centre.minus(ray.origin);
@@ -199,7 +193,7 @@ impl Sphere {
             return None;
         }
         // r² − d² ≤ r² ≤ 2²⁰·2³², so a fits Q16.16.
-        let a = Fx::from_bits(isqrt_in_line(r2 - d2) as i32);
+        let a = Fx::from_bits(isqrt(r2 - d2) as i32);
         let near = t_close - a;
         let t = if near >= SURELY_OUTSIDE {
             near
@@ -270,7 +264,7 @@ impl Sphere {
         // A hit point lies within the budget and a centre within LIMIT, and the normal is a
         // unit vector: the difference needs no saturation check, nor the dot product a
         // range check (`Vec3::dot_wide`'s). A secondary ray's question, a call away.
-        hit.normal.dot_wide_once(hit.point.minus(self.centre)) < 0
+        hit.normal.dot_wide_exact(hit.point.minus(self.centre)) < 0
     }
 
     /// The crossing ahead of a ray whose near crossing `t_close − a` came out below
@@ -300,10 +294,6 @@ impl Sphere {
 
     /// The hit at distance `t` along `ray`: its point, and its normal facing the ray.
     // In line but on the Cortex-M0, as `hit_distance` is.
-    #[cfg_attr(
-        not(all(target_arch = "arm", not(target_has_atomic = "32"))),
-        inline(always)
-    )]
     pub(crate) fn hit_at(&self, ray: &Ray, t: Fx) -> Hit {
         let point = ray.at_hit(t);
         Hit::facing(t, point, self.outward_normal(point), ray.dir)
@@ -344,7 +334,6 @@ impl Sphere {
 /// `2^(k+2)`, more than twice the radius, is held at ±1 either way; held at `2^(k+2)` first,
 /// it fits 32 bits once moved (2²⁰). Not on the Cortex-M0: there the high word takes as many
 /// 16-bit products and carries as the whole product, and the plain quotient stays.
-#[inline(always)]
 fn lifted(v: Vec3, k: u32) -> Vec3 {
     let bound = 1i32 << (k + 2);
     let lift = |c: Fx| Fx::from_bits(c.to_bits().max(-bound).min(bound) << (18 - k));
@@ -353,7 +342,6 @@ fn lifted(v: Vec3, k: u32) -> Vec3 {
 
 /// `d²`, the squared distance from the centre of the point `t_close` along `ray`, whose
 /// origin is `to_centre` from the centre: `x_close − c = t_close·u_r − (c − p_r)`.
-#[inline(always)]
 fn closest_squared(ray: &Ray, to_centre: Vec3, t_close: Fx) -> u64 {
     ray.dir
         .scale_unit(t_close)

@@ -29,21 +29,7 @@ pub(crate) const HIT_REACH: i32 = LIMIT.to_bits() + FAR.to_bits();
 /// Number of fractional bits in [`Fx`].
 pub(crate) const FRAC: u32 = 16;
 
-/// ARMv6-M (Cortex-M0/M0+), which multiplies 32 × 32 → 32 only: there the compiler's 64-bit
-/// product is a call to a full 64 × 64 multiply. (ARMv6-M is told apart from the Arm cores
-/// that have `smull` by its lack of 32-bit atomics: rustc exposes no target feature for the
-/// long multiply.)
-pub(crate) const NO_LONG_MULTIPLY: bool =
-    cfg!(all(target_arch = "arm", not(target_has_atomic = "32")));
-
-/// ARMv6-M, which has no divide instruction: there a 32-bit division is a library call.
-pub(crate) const NO_DIVIDE: bool = NO_LONG_MULTIPLY;
-
-/// Chips without a count-leading-zeros instruction: ARMv6-M, and RV32 without Zbb.
-pub(crate) const NO_CLZ: bool = cfg!(any(
-    all(target_arch = "arm", not(target_has_atomic = "32")),
-    all(target_arch = "riscv32", not(target_feature = "zbb"))
-));
+pub(crate) use crate::chip::{NO_CLZ, NO_DIVIDE, NO_LONG_MULTIPLY};
 
 /// The product of two Q16.16 raw values, exact, as a Q32.32 raw value.
 #[inline]
@@ -54,17 +40,6 @@ pub(crate) const fn wide_mul(a: i32, b: i32) -> i64 {
     } else {
         a as i64 * b as i64
     }
-}
-
-/// [`wide_mul`] for the work of a frame or a row (spans, culling balls, a stretch's offsets),
-/// whose products share one copy where it is a sequence: on the Cortex-M0 out of line, where
-/// the compiler's own product of two widened `i32`s is a call to a full 64 × 64 multiply,
-/// about twice as long.
-#[cfg_attr(all(target_arch = "arm", not(target_has_atomic = "32")), inline(never))]
-#[cfg_attr(not(all(target_arch = "arm", not(target_has_atomic = "32"))), inline)]
-#[must_use]
-pub(crate) const fn wide_mul_once(a: i32, b: i32) -> i64 {
-    wide_mul(a, b)
 }
 
 /// `a · b` for unsigned 32-bit values, exact in 64 bits, by the cheapest means the chip has
@@ -179,13 +154,7 @@ pub(crate) const fn shift_round(product: i64, shift: u32) -> i64 {
     }
 }
 
-/// Chips where a 64-bit shift by a variable amount is a library call (ARMv6-M) or a
-/// branching sequence (RV32): there [`shift_round_words`] shifts by 32-bit words. The Armv7-M
-/// cores shift 64 bits in a few instructions, and measured slower with it.
-const WORD_SHIFTS: bool = cfg!(any(
-    all(target_arch = "arm", not(target_has_atomic = "32")),
-    target_arch = "riscv32"
-));
+use crate::chip::WORD_SHIFTS;
 
 /// [`shift_round`] for `1 ≤ shift ≤ 32`, in 32-bit words: the rounding term is below 2³², so
 /// it adds to the low word with a carry into the high word, which holds the sum. Compiled

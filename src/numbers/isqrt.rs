@@ -1,7 +1,7 @@
 //! The exact integer square root, kept in one place so that it can be swapped by measurement.
 
 use crate::numbers::fx::{top_word, wide_mul_u32};
-use crate::numbers::reciprocal::{rsqrt, rsqrt_unit_in_line};
+use crate::numbers::reciprocal::{rsqrt, rsqrt_unit_and_mantissa};
 
 /// `floor(sqrt(x))` for every `u64`, exactly.
 ///
@@ -59,7 +59,6 @@ pub const fn isqrt(x: u64) -> u64 {
 /// [`isqrt`] for `2 ≤ x < 2⁴⁴`: its estimate, below 2²² and within 4 of the root, and its
 /// whole steps in 32-bit words: the residual `x − r²` lies within ±2³¹ (within about ±2²⁶ for
 /// the estimate's 4), so taken modulo 2³² it is exact.
-#[inline(always)]
 const fn root_below_two_to_the_44(x: u64) -> u32 {
     let mut r = estimate(x) as u32;
     debug_assert!(
@@ -78,36 +77,16 @@ const fn root_below_two_to_the_44(x: u64) -> u32 {
     r
 }
 
-/// [`isqrt`], in line on the Arm cores for an `x` below 2⁴⁴, where every sphere test's root
-/// lies: the sphere test takes it, where a call would move the test's values out of the
-/// registers it clobbers. Larger values, and every value on RV32, whose flash does not hold a
-/// copy in each sphere test, take the call.
-#[inline(always)]
-pub(crate) const fn isqrt_in_line(x: u64) -> u64 {
-    in_line_by::<{ cfg!(target_arch = "arm") }>(x)
-}
-
-/// [`isqrt_in_line`] with the root below 2⁴⁴ in line where `IN_LINE`: compiled everywhere, so
-/// the host tests check it.
-#[inline(always)]
-const fn in_line_by<const IN_LINE: bool>(x: u64) -> u64 {
-    if IN_LINE && x >= 2 && x < 1 << 44 {
-        return root_below_two_to_the_44(x) as u64;
-    }
-    isqrt(x)
-}
-
 /// `1/√x` as `(y, half)` (see `rsqrt`) and `x`'s top 32 bits at the bit length `2·half`, for
 /// [`estimate`]: below 2⁴⁴ the table's seed alone (2⁻²⁰·⁶ of it) leaves the estimate within 4
 /// of the root, a few whole steps, where the Newton step would cost three 64-bit products;
 /// the sphere tests' roots are there. The seed is taken in line with the mantissa it looked up
-/// (`rsqrt_unit_in_line`): a call would move the sphere test's values out of the registers it
+/// (`rsqrt_unit_and_mantissa`): a call would move the sphere test's values out of the registers it
 /// clobbers, and the mantissa need not be found again (on the Cortex-M0 and RV32, which have
 /// no count-leading-zeros instruction, a second bit length).
-#[inline(always)]
 const fn root_and_mantissa(x: u64) -> (u32, u32, u32) {
     if x < 1 << 44 {
-        return rsqrt_unit_in_line(x);
+        return rsqrt_unit_and_mantissa(x);
     }
     let (y, half) = rsqrt(x);
     (y, half, top_word(x, 2 * half))
@@ -129,13 +108,6 @@ const fn estimate(x: u64) -> u64 {
     } else {
         product >> (62 - half)
     }
-}
-
-/// [`isqrt`], out of line: for the set-up work of a frame or a row (lengths, the balls that
-/// bound what a row can meet), which shares one copy, while each sphere test keeps its own.
-#[inline(never)]
-pub(crate) const fn isqrt_once(x: u64) -> u64 {
-    isqrt(x)
 }
 
 #[cfg(test)]

@@ -52,9 +52,8 @@ const RSQRT_KNOTS: [u32; 194] = {
 
 /// [`RSQRT_KNOTS`] indexed by a mantissa's top byte itself (64 to 255, and the two knots past
 /// the last), the first 64 entries unused: where the byte indexes the table directly, no
-/// index needs checking against its length (a mantissa's top byte is at most 255). A
-/// kilobyte of flash, against 776 bytes, on the chips whose flash allows it; the Cortex-M0's
-/// subtracts 64 from the byte.
+/// index needs checking against its length (a mantissa's top byte is at most 255), for 256
+/// bytes of flash.
 const RSQRT_BY_BYTE: [u32; 258] = {
     let mut knots = [0u32; 258];
     let mut j = 0;
@@ -66,15 +65,9 @@ const RSQRT_BY_BYTE: [u32; 258] = {
 };
 
 /// The three knots from the one below a mantissa whose top byte is `byte` (64 to 255).
-#[inline(always)]
 const fn knots_from(byte: usize) -> (u32, u32, u32) {
-    if fx::NO_LONG_MULTIPLY {
-        let j = byte - 64;
-        (RSQRT_KNOTS[j], RSQRT_KNOTS[j + 1], RSQRT_KNOTS[j + 2])
-    } else {
-        let t = &RSQRT_BY_BYTE;
-        (t[byte], t[byte + 1], t[byte + 2])
-    }
+    let t = &RSQRT_BY_BYTE;
+    (t[byte], t[byte + 1], t[byte + 2])
 }
 
 /// `1/√s` for `s ≥ 1`, as `(y, shift)` with `1/√s ≈ y · 2^−(30 + shift)`, to about 2⁻²⁰:
@@ -87,17 +80,9 @@ const fn knots_from(byte: usize) -> (u32, u32, u32) {
 // In line on the Armv7-M cores, where the bit length is one instruction and the whole is
 // short; out of line on ARMv6-M and RV32, where it is not, and one copy serves every ray and
 // light direction within the flash the firmware is held to.
-#[cfg_attr(
-    not(any(target_arch = "riscv32", not(target_has_atomic = "32"))),
-    inline
-)]
-#[cfg_attr(
-    any(target_arch = "riscv32", not(target_has_atomic = "32")),
-    inline(never)
-)]
 #[must_use]
 pub(crate) const fn rsqrt_unit(s: u64) -> (u32, u32) {
-    let (y, half, _) = rsqrt_unit_in_line(s);
+    let (y, half, _) = rsqrt_unit_and_mantissa(s);
     (y, half)
 }
 
@@ -107,9 +92,8 @@ pub(crate) const fn rsqrt_unit(s: u64) -> (u32, u32) {
 /// estimate multiplies the root by that mantissa), where a call would move those values out
 /// of the registers it clobbers. Each caller says on which chips it takes it; a floor's
 /// columns take it through [`rsqrt_unit_near`].
-#[inline(always)]
 #[must_use]
-pub(crate) const fn rsqrt_unit_in_line(s: u64) -> (u32, u32, u32) {
+pub(crate) const fn rsqrt_unit_and_mantissa(s: u64) -> (u32, u32, u32) {
     // 0 has no reciprocal root, and no bit for the table to be indexed by.
     debug_assert!(s >= 1, "rsqrt: zero argument");
     // μ = m · 2⁻³², s scaled by 2^(32 − p) with p even and s ≥ 2^(p−2); half = p / 2.
@@ -117,9 +101,8 @@ pub(crate) const fn rsqrt_unit_in_line(s: u64) -> (u32, u32, u32) {
     (interpolated(m), half, m)
 }
 
-/// [`rsqrt_unit_in_line`] for one of a run of arguments that mostly share their even bit
+/// [`rsqrt_unit_and_mantissa`] for one of a run of arguments that mostly share their even bit
 /// length, which `length` keeps from one to the next ([`EvenLength`]): the same values.
-#[inline(always)]
 #[must_use]
 pub(crate) fn rsqrt_unit_near(s: u64, length: &mut EvenLength) -> (u32, u32) {
     debug_assert!(s >= 1, "rsqrt: zero argument");
@@ -128,7 +111,6 @@ pub(crate) fn rsqrt_unit_near(s: u64, length: &mut EvenLength) -> (u32, u32) {
 }
 
 /// `1/√μ` in Q2.30 for `μ = m · 2⁻³²` in `[¼, 1)`: the table's quadratic interpolation.
-#[inline(always)]
 pub(super) const fn interpolated(m: u32) -> u32 {
     // Knot j below μ, and t, the next 16 bits, the way to knot j + 1 in units of 2⁻¹⁶.
     let t = (m >> 8) & 0xffff;
@@ -171,7 +153,6 @@ impl EvenLength {
 
     /// [`fx::even_top_word`]`(x)` for `x ≥ 1`, through the kept length where `x` has it, and
     /// keeping `x`'s otherwise.
-    #[inline(always)]
     pub(crate) fn even_top_word(&mut self, x: u64) -> (u32, u32) {
         // Where the leading zeros are one instruction, finding the length measured shorter
         // than keeping it.
@@ -183,7 +164,6 @@ impl EvenLength {
 
     /// [`EvenLength::even_top_word`] through the kept length, whatever the chip: compiled
     /// everywhere, so that the host tests check it.
-    #[inline(always)]
     pub(super) fn kept_or_found(&mut self, x: u64) -> (u32, u32) {
         let (high, low) = ((x >> 32) as u32, x as u32);
         if high.wrapping_sub(self.base) < self.span {
@@ -245,7 +225,6 @@ const RECIPROCAL_KNOTS: [u32; 129] = {
 /// Newton's step for a reciprocal approaches it from below, but the step's truncated product
 /// `δ·y` can leave `y` up to 3 units above it (a test holds it below 4).
 // Out of line: a division and the bound on FAR share it, in every loop that meets planes.
-#[inline(never)]
 pub(crate) fn inverse(den: u64) -> (u32, u32) {
     let den_bits = bit_length(den); // den < 2^den_bits
     let d = top_word(den, den_bits);
@@ -424,7 +403,7 @@ mod tests {
             // The in-line form gives the same root, and its mantissa is `s`'s top word at the
             // root's bit length.
             assert_eq!(
-                rsqrt_unit_in_line(s),
+                rsqrt_unit_and_mantissa(s),
                 (y, shift, top_word(s, 2 * shift)),
                 "{s}"
             );

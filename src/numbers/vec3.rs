@@ -3,8 +3,8 @@
 use core::ops::{Add, Neg, Sub};
 
 use crate::numbers::fx::{self, Fx};
-use crate::numbers::isqrt::isqrt_once;
-use crate::numbers::reciprocal::{EvenLength, rsqrt_unit, rsqrt_unit_in_line, rsqrt_unit_near};
+use crate::numbers::isqrt::isqrt;
+use crate::numbers::reciprocal::{EvenLength, rsqrt_unit, rsqrt_unit_near};
 
 /// A point or a direction with three Q16.16 components.
 ///
@@ -126,7 +126,6 @@ impl Vec3 {
     /// The exact dot product, saturated to `i64`: the rare path of
     /// [`Vec3::dot_wide`] and [`Vec3::dot`], for vectors far outside the overflow budget.
     #[cold]
-    #[inline(never)]
     const fn dot_wide_saturated(self, o: Vec3) -> i64 {
         // Each product is exact at 64 bits and at most 2⁶² in magnitude, and the sum is
         // followed through two 64-bit additions by their overflows, shorter than a 128-bit
@@ -161,16 +160,6 @@ impl Vec3 {
             "dot_wide_exact: neither vector a unit one, nor both inside the overflow budget"
         );
         sparse_mul(self.x, o.x) + sparse_mul(self.y, o.y) + sparse_mul(self.z, o.z)
-    }
-
-    /// [`Vec3::dot_wide_exact`] where a call costs little against the work about it: a run's
-    /// or a row's (a plane's numerator, the culling and the run's tests), a plane's hit, the
-    /// side of a sphere a secondary ray met. Out of line on the Cortex-M0, where the products
-    /// are a long sequence whose copies its flash does not hold; in line elsewhere.
-    #[cfg_attr(all(target_arch = "arm", not(target_has_atomic = "32")), inline(never))]
-    #[cfg_attr(not(all(target_arch = "arm", not(target_has_atomic = "32"))), inline)]
-    pub(crate) const fn dot_wide_once(self, o: Vec3) -> i64 {
-        self.dot_wide_exact(o)
     }
 
     /// `self + o` for the render path's points and offsets, which lie within the overflow
@@ -247,43 +236,22 @@ impl Vec3 {
         }
     }
 
-    /// [`Vec3::dot`], out of line: for the work of a frame or a row (set-up, culling, shadow
-    /// sets), which shares one copy. Where a 64-bit product is a long sequence, a unit-sized
-    /// `self` (within 2¹⁷ raw) and an `o` within 2²⁸ raw, as those are (a normal or a step
-    /// along a row, and a difference of points within `LIMIT`), take the split products of
-    /// [`Vec3::dot_exact`], the same value: the dot product then lies within 3·2²⁹ raw, and
-    /// fits.
-    #[inline(never)]
-    pub(crate) const fn dot_once(self, o: Vec3) -> Fx {
+    /// [`Vec3::dot`] of a unit-sized `self` (within 2¹⁷ raw: a normal, a ray's direction, a
+    /// step along a row) and an `o` within 2²⁸ raw (another such vector, a difference of
+    /// points within `LIMIT`). Where a 64-bit product is a long sequence, from the split
+    /// products of [`Vec3::dot_exact`], the same value: the dot product then lies within
+    /// 3·2²⁹ raw, and fits.
+    pub(crate) const fn dot_units(self, o: Vec3) -> Fx {
         self.dot_by::<{ fx::NO_LONG_MULTIPLY }>(o)
     }
 
-    /// [`Vec3::dot`], from the split products within [`Vec3::dot_once`]'s bounds where
-    /// `SPLIT`: both forms are compiled everywhere, so the host tests check the M0's.
-    #[inline(always)]
+    /// [`Vec3::dot_units`], from the split products where `SPLIT`: both forms are compiled
+    /// everywhere, so the host tests check the Cortex-M0's.
     const fn dot_by<const SPLIT: bool>(self, o: Vec3) -> Fx {
         if SPLIT && self.within_raw(1 << 17) && o.within_raw(1 << 28) {
             return Fx::from_bits(split_dot_unit(self, o));
         }
         self.dot(o)
-    }
-
-    /// [`Vec3::dot`] of two unit vectors in a highlight's or a mirror's shading: on the
-    /// Cortex-M0 through [`Vec3::dot_once`]'s one copy, whose split products cost less there
-    /// than the 64-bit sum; in line elsewhere.
-    #[inline(always)]
-    pub(crate) const fn dot_units(self, o: Vec3) -> Fx {
-        if fx::NO_LONG_MULTIPLY {
-            self.dot_once(o)
-        } else {
-            self.dot(o)
-        }
-    }
-
-    /// [`Vec3::cross`], out of line: for the work of a frame or a row, as [`Vec3::dot_once`].
-    #[inline(never)]
-    pub(crate) const fn cross_once(self, o: Vec3) -> Vec3 {
-        self.cross(o)
     }
 
     /// Whether `self · o > 0`, exactly, for two unit vectors (components below 2¹⁷ raw): on
@@ -346,23 +314,12 @@ impl Vec3 {
         sq(self.x) + sq(self.y) + sq(self.z)
     }
 
-    /// [`Vec3::length_squared_wide`] where a call costs little against the work about it: a
-    /// run's or a row's (its ends, where it starts), a plane's hit. Out of line on the
-    /// Cortex-M0, where the squares are a long sequence whose copies its flash does not hold;
-    /// in line elsewhere.
-    #[cfg_attr(all(target_arch = "arm", not(target_has_atomic = "32")), inline(never))]
-    #[cfg_attr(not(all(target_arch = "arm", not(target_has_atomic = "32"))), inline)]
-    pub(crate) const fn length_squared_once(self) -> u64 {
-        self.length_squared_wide()
-    }
-
     /// ‖self‖, truncated to Q16.16: `isqrt` of the exact Q32.32 square.
     // Out of line: only set-up, row and shadow-set code takes a length, none a pixel, and
     // it is long on chips without 64-bit multiplication.
-    #[inline(never)]
     #[must_use]
     pub const fn length(self) -> Fx {
-        let root = isqrt_once(self.length_squared_wide());
+        let root = isqrt(self.length_squared_wide());
         // The root is below √3 · 2³¹; above i32::MAX it saturates.
         if root > i32::MAX as u64 {
             Fx::MAX
@@ -401,24 +358,16 @@ impl Vec3 {
     /// for callers that have it already, or can keep it up to date for less.
     #[inline]
     pub(crate) const fn normalize_with_square(self, square: u64) -> Option<Vec3> {
-        self.normalize_by::<false>(square)
+        self.normalize_by(square)
     }
 
-    /// [`Vec3::normalize_with_square`] with the reciprocal root in line
-    /// ([`rsqrt_unit_in_line`]), for a light's direction at each lit pixel.
-    #[inline(always)]
-    pub(crate) const fn normalize_in_line(self, square: u64) -> Option<Vec3> {
-        self.normalize_by::<true>(square)
-    }
-
-    /// [`Vec3::normalize_with_square`], the root in line where `IN_LINE` ([`unit_scale`]).
-    #[inline(always)]
-    const fn normalize_by<const IN_LINE: bool>(self, square: u64) -> Option<Vec3> {
+    /// [`Vec3::normalize_with_square`]'s work.
+    const fn normalize_by(self, square: u64) -> Option<Vec3> {
         debug_assert!(
             square == self.length_squared_wide(),
             "normalize_with_square: square is not the vector's squared length"
         );
-        let Some((y, shift)) = unit_scale::<IN_LINE>(square) else {
+        let Some((y, shift)) = unit_scale(square) else {
             return None;
         };
         Some(Vec3::new(
@@ -433,7 +382,7 @@ impl Vec3 {
     /// without the other two, where the unit vector is only dotted with an axis.
     #[inline]
     pub(crate) const fn unit_component_with_square(c: Fx, square: u64) -> Option<Fx> {
-        match unit_scale::<false>(square) {
+        match unit_scale(square) {
             Some((y, shift)) => Some(unit_part(c, y, shift)),
             None => None,
         }
@@ -442,7 +391,6 @@ impl Vec3 {
     /// [`Vec3::unit_component_with_square`] with the reciprocal root in line, for a loop that
     /// takes one a column, whose squares mostly share their even bit length: kept from one to
     /// the next in `length` ([`rsqrt_unit_near`]).
-    #[inline(always)]
     pub(crate) fn unit_component_near(c: Fx, square: u64, length: &mut EvenLength) -> Option<Fx> {
         if square == 0 {
             return None;
@@ -461,26 +409,17 @@ impl Vec3 {
 
 /// `1/‖v‖` for a vector `v` whose squared length is `square`, as a factor `y` and a shift
 /// (`y · 2^−shift · 2¹⁶`), or `None` for the zero vector: what each of a unit vector's
-/// components is multiplied by ([`unit_part`]). With `IN_LINE`, the root is taken in line
-/// ([`rsqrt_unit_in_line`]): where a call would move the caller's values out of the registers
-/// it clobbers.
-#[inline]
-const fn unit_scale<const IN_LINE: bool>(square: u64) -> Option<(u32, u32)> {
+/// components is multiplied by ([`unit_part`]).
+const fn unit_scale(square: u64) -> Option<(u32, u32)> {
     if square == 0 {
         return None;
     }
-    let (y, half) = if IN_LINE {
-        let (y, half, _) = rsqrt_unit_in_line(square);
-        (y, half)
-    } else {
-        rsqrt_unit(square)
-    };
+    let (y, half) = rsqrt_unit(square);
     Some(unit_factor(y, half))
 }
 
 /// [`unit_scale`]'s factor and shift from a reciprocal root `1/√s ≈ y · 2^−(30 + half)` of the
 /// squared length `s`: `1/‖v‖` in units of 2⁻¹⁶ is `y · 2^−(30 + half) · 2¹⁶`.
-#[inline(always)]
 const fn unit_factor(y: u32, half: u32) -> (u32, u32) {
     (y, 14 + half)
 }
@@ -734,7 +673,7 @@ mod tests {
             let square = v.length_squared_wide();
             let unit = v.normalize_with_square(square);
             // In line or called, the root is the same.
-            assert_eq!(v.normalize_in_line(square), unit, "{v:?}");
+            assert_eq!(v.normalize_with_square(square), unit, "{v:?}");
             for (c, u) in [
                 (v.x, unit.map(|u| u.x)),
                 (v.y, unit.map(|u| u.y)),
@@ -773,7 +712,7 @@ mod tests {
                     Fx::from_bits(next(20) >> (i % 7)),
                 ),
             };
-            let Some((y, shift)) = unit_scale::<false>(v.length_squared_wide()) else {
+            let Some((y, shift)) = unit_scale(v.length_squared_wide()) else {
                 continue;
             };
             moved += u32::from(shift < 33);
@@ -790,7 +729,7 @@ mod tests {
 
     #[test]
     fn the_split_dot_product_is_the_dot_product_within_dot_onces_bounds() {
-        // `dot_once` on the Cortex-M0 takes the split products for a `self` within 2¹⁷ raw
+        // `dot_units` on the Cortex-M0 takes the split products for a `self` within 2¹⁷ raw
         // and an `o` within 2²⁸: the same value as `dot`, which never saturates there. The
         // bounds themselves, both signs, and random values within them.
         let mut rng = crate::xorshift::XorShift(0x6a09_e667_f3bc_c908);
@@ -829,7 +768,7 @@ mod tests {
             );
             assert_eq!(u.dot_by::<true>(v), u.dot(v), "{u:?} · {v:?}");
         }
-        // Past the bound `dot` saturates, and so must `dot_once`: the bound is where the split
+        // Past the bound `dot` saturates, and so must `dot_units`: the bound is where the split
         // products stop being the answer.
         let unit = Vec3::new(
             Fx::from_bits(1 << 17),

@@ -9,7 +9,7 @@ use crate::geometry::ray::Ray;
 use crate::geometry::shape::Shape;
 use crate::numbers::vec3::Vec3;
 use crate::render::accel::matte::MatteRun;
-use crate::render::accel::row_rays::RowSquares;
+use crate::render::accel::row_rays::RowRays;
 use crate::render::accel::runs::Runs;
 use crate::render::camera::Camera;
 use crate::scene::Scene;
@@ -64,7 +64,6 @@ pub fn render_row<const N: usize, const L: usize>(
 
 /// Paints what [`cast_row`] hands over for `out[cols]`, display columns from `first` of display
 /// row `row`: a shaded pixel, a matte run, or a run of sky (`sky`, where it is plain).
-#[inline(always)]
 fn paint<const N: usize, const L: usize>(
     (scene, camera, row, first): (&Scene<N, L>, &Camera, u16, u16),
     out: &mut [Rgb],
@@ -262,7 +261,7 @@ fn cast_row<const N: usize, const L: usize>(
         if let Some(index) = one
             && matte
             && let Some(plane) = matte_plane(scene, index)
-            && plane.normal().dot_wide_once(camera.column_step()) == 0
+            && plane.normal().dot_wide_exact(camera.column_step()) == 0
         {
             let num = eye.numerator(index);
             let towards = runs.towards(first);
@@ -296,39 +295,20 @@ fn matte_plane<const N: usize, const L: usize>(scene: &Scene<N, L>, index: usize
 
 /// The rays of columns `cols` of a run, the first along `towards`, each shot by `shoot` and
 /// handed to `each` as [`cast_row`] does.
-#[inline(always)]
 fn cast_run(
     camera: &Camera,
-    mut towards: Vec3,
+    towards: Vec3,
     cols: Range<u16>,
     shoot: impl Fn(&Ray) -> Option<SceneHit>,
     each: &mut impl FnMut(u16, u16, Cast<'_>),
 ) {
-    // Consecutive pixels differ by one column step, exactly: `RowRays`' walk, written out
-    // because through the iterator the frame measured 19 instructions a pixel more on the
-    // Cortex-M4F and 66 on the M0 (with a `while let` over it, 2 and 7).
-    let mut square = RowSquares::new(towards, camera.column_step());
-    // On RV32 one ray serves the run, its direction replaced each column, so that the eye is
-    // not stored again with each; elsewhere a ray made whole each column came out shorter.
-    // Two loops, as the choice made inside one changed the other chips' code as well.
-    if cfg!(target_arch = "riscv32") {
-        let mut ray = Ray::along(camera.eye(), Vec3::ZERO, towards);
-        for col in cols {
-            let next = camera.ray_along(towards, square.now(towards));
-            (ray.dir, ray.w) = (next.dir, next.w);
-            let hit = shoot(&ray);
-            each(col, col + 1, Cast::Ray(&ray, hit));
-            towards = towards.plus(camera.column_step());
-            square.step();
-        }
-        return;
-    }
+    let mut rays = RowRays::starting(camera, towards, cols.len() as u16);
     for col in cols {
-        let ray = camera.ray_along(towards, square.now(towards));
+        let Some(ray) = rays.next() else {
+            return;
+        };
         let hit = shoot(&ray);
         each(col, col + 1, Cast::Ray(&ray, hit));
-        towards = towards.plus(camera.column_step());
-        square.step();
     }
 }
 

@@ -353,7 +353,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     pub(crate) fn towards_light(&self, light: &Light, at: &Surface) -> Option<TowardsLight> {
         let to_light = light.position.minus(at.point);
         let distance_squared = to_light.length_squared_wide();
-        let l = to_light.normalize_in_line(distance_squared)?;
+        let l = to_light.normalize_with_square(distance_squared)?;
         let cos = at.normal.dot_exact(l);
         (cos > Fx::ZERO).then_some(TowardsLight {
             l,

@@ -374,7 +374,6 @@ impl Checker {
     /// taken only where a division is a library call (the Cortex-M0): elsewhere it is one
     /// instruction, and the test for a power would cost more. Both forms are compiled
     /// everywhere, so the host tests check them.
-    #[inline(always)]
     fn index<const SHIFTS: bool>(&self, c: Fx) -> i32 {
         if SHIFTS && self.shift != NOT_A_POWER {
             c.to_bits() >> self.shift

@@ -52,7 +52,6 @@ impl Object {
 
     /// [`Object::colour_at`] for a material with a checkerboard: out of line, since the plain
     /// colour is the common case and every pixel's shading asks for one or the other.
-    #[inline(never)]
     fn checkered_at(&self, point: Vec3) -> Rgb {
         match (self.material.checker, self.shape) {
             (Some(checker), Shape::Plane(plane)) => {

@@ -8,7 +8,7 @@ use crate::geometry::shape::Shape;
 use crate::geometry::sphere::Sphere;
 use crate::numbers::bits;
 use crate::numbers::fx::{self, FAR, Fx};
-use crate::numbers::isqrt::isqrt_once;
+use crate::numbers::isqrt::isqrt;
 use crate::numbers::vec3::Vec3;
 use crate::scene::hit::SceneHit;
 use crate::scene::{Object, Scene};
@@ -200,7 +200,6 @@ impl<const N: usize> Eye<N> {
 /// The spheres among the objects `others` of `scene` that lie wholly before each of its
 /// planes `planes` (bit `i` for object `i`), seen from `eye` ([`before_plane`]); none in
 /// scenes of more than 64 objects. Once a row, and out of line.
-#[inline(never)]
 fn spheres_before_planes<const N: usize, const L: usize>(
     scene: &Scene<N, L>,
     planes: u64,
@@ -269,18 +268,16 @@ fn before_plane(sphere: &Sphere, plane: &Plane, from_eye: &Numerator, eye: Vec3)
 /// Whether `sphere` may meet a ray of the row whose plane through `eye` has the unit normal
 /// `normal` (see `Camera::row_plane_normal`): [`Scene::seen_from_row`]'s test for one sphere,
 /// which the damage of an edit repeats exactly.
-#[inline(always)]
 pub(crate) fn near_row_plane(sphere: &Sphere, eye: Vec3, normal: Vec3) -> bool {
     let to_centre = sphere.centre() - eye;
     let margin = Fx::from_bits(stray(to_centre.l1_raw()) as i32);
-    normal.dot_once(to_centre).abs() <= sphere.radius() + margin
+    normal.dot_units(to_centre).abs() <= sphere.radius() + margin
 }
 
 /// How far, in raw units, a row's rays may lie from the row's plane at a distance of at most
 /// `reach` raw units from the eye (an `|x| + |y| + |z|`, at least the distance): ray
 /// directions are within a few units of 2⁻¹⁶ of the row plane, so over a distance D they
 /// stray by less than D · 2⁻¹², and the normal's own rounding adds as much again.
-#[inline(always)]
 const fn stray(reach: i64) -> i64 {
     (reach >> 11) + (1 << 8)
 }
@@ -298,7 +295,6 @@ const fn stray(reach: i64) -> i64 {
 /// rounding of `n` and of `C'`, far more than either; where that is not smaller than `r`, the
 /// sphere itself is the ball.
 // In raw integers: once a row for each sphere near it, and short.
-#[inline(never)]
 pub(crate) fn row_ball(sphere: &Sphere, eye: Vec3, normal: Vec3) -> (Vec3, Fx) {
     let (centre, r) = (sphere.centre(), sphere.radius());
     let to_centre = centre.minus(eye);
@@ -307,24 +303,22 @@ pub(crate) fn row_ball(sphere: &Sphere, eye: Vec3, normal: Vec3) -> (Vec3, Fx) {
     let radius = r.to_bits() as i64;
     let margin = stray(to_centre.l1_raw() + radius);
     // n·(C − eye), rounded down: a unit off at most, which the margin covers.
-    let d = normal.dot_wide_once(to_centre) >> 16;
+    let d = normal.dot_wide_exact(to_centre) >> 16;
     let off = (d.abs() - margin).max(0);
     // Each factor below 2²⁸ (radii, distances and margins of points within ±1024): the
-    // products of two `i32`s, as the work of a row takes them (`fx::wide_mul_once`).
+    // products of two `i32`s, as the work of a row takes them (`fx::wide_mul`).
     let square = |v: i64| {
         debug_assert!(v.unsigned_abs() < 1 << 28, "row_ball: a length past 2²⁸");
-        fx::wide_mul_once(v as i32, v as i32)
+        fx::wide_mul(v as i32, v as i32)
     };
     let squared = (square(radius) - square(off)).max(0) + square(margin);
-    let widened = isqrt_once(squared as u64) as i64 + 1 + (radius >> 10) + (1 << 6);
+    let widened = isqrt(squared as u64) as i64 + 1 + (radius >> 10) + (1 << 6);
     if widened >= radius {
         return (centre, r);
     }
     // C' = C − d·n, each component rounded down.
     let across = |c: Fx, n: Fx| {
-        Fx::from_bits(
-            (c.to_bits() as i64 - (fx::wide_mul_once(n.to_bits(), d as i32) >> 16)) as i32,
-        )
+        Fx::from_bits((c.to_bits() as i64 - (fx::wide_mul(n.to_bits(), d as i32) >> 16)) as i32)
     };
     let circle = Vec3::new(
         across(centre.x, normal.x),

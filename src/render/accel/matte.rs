@@ -50,7 +50,6 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// light, whose shadow rays towards light `i` try only the objects of
     /// `plane_shadowers[i]` (see `accel/shadow_rows.rs`); elsewhere the background.
     // Out of line: the loop of most floor pixels, kept whole and in one place.
-    #[inline(never)]
     pub(crate) fn shade_matte_run(
         &self,
         camera: &Camera,
@@ -85,7 +84,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         };
         let (eye, step, towards) = (camera.eye(), camera.column_step(), run.towards);
         // Where the plane is not ahead of the row, nothing is within reach.
-        let scale = plane.scale_along(run.num, plane.normal().dot_wide_once(towards));
+        let scale = plane.scale_along(run.num, plane.normal().dot_wide_exact(towards));
         let reach = scale.map_or(0, far_reach);
         let scale = scale.unwrap_or(Scale { m: 0, shift: 1 });
         let walk = |from: usize| Walk {
@@ -158,7 +157,6 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// any column, it meets the same values as a walk from the run's start: the steps are
     /// exact.
     // Out of line: one copy, however many stretches a run has.
-    #[inline(never)]
     fn matte_loop(
         &self,
         camera: &Camera,
@@ -206,7 +204,6 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// cosine alone ([`Axis`]). Its own loop, which keeps the values the columns share in
     /// registers.
     // Out of line: one copy for every stretch.
-    #[inline(never)]
     fn lit_stretch(
         &self,
         camera: &Camera,
@@ -268,7 +265,6 @@ impl<const N: usize, const L: usize> Scene<N, L> {
 
     /// What column `k` of a stretch that starts along `start` sees past a plane's bounds.
     #[cold]
-    #[inline(never)]
     fn background_past_bounds(&self, camera: &Camera, start: Vec3, k: usize) -> Rgb {
         match self.background().plain_colour() {
             Some(sky) => sky,
@@ -283,7 +279,6 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// `square`, sees of a background that is not plain: out of line, since most backgrounds
     /// are, and from the stretch's start, so that the loop need not carry the direction.
     #[cold]
-    #[inline(never)]
     fn background_along(&self, camera: &Camera, start: Vec3, k: usize, square: u64) -> Rgb {
         let towards = match k {
             0 => start,
@@ -311,7 +306,7 @@ impl Walk {
         let last = self.towards.plus(step.steps(len.saturating_sub(1) as i32));
         [self.towards, last]
             .iter()
-            .all(|end| end.length_squared_once() <= self.reach)
+            .all(|end| end.length_squared_wide() <= self.reach)
     }
 }
 
@@ -345,35 +340,30 @@ impl Axis {
 
     /// What `Scene::reaches` gives as the cosine of `to_light` (from the hit to the light) on a
     /// surface facing along the axis, without a shadow ray: `None` where it is not positive.
-    #[inline(always)]
     fn cosine(self, to_light: Vec3) -> Option<Fx> {
         self.cosine_of(self.across(to_light).z, to_light.length_squared_wide())
     }
 
     /// [`Axis::cosine`] of a vector whose component along the axis is `c` and whose squared
     /// length is `square`.
-    #[inline(always)]
     fn cosine_of(self, c: Fx, square: u64) -> Option<Fx> {
         self.facing(Vec3::unit_component_with_square(c, square)?)
     }
 
     /// [`Axis::cosine_of`] with the reciprocal root in line, for one of a run of squares that
     /// mostly share their bit length, kept in `length`.
-    #[inline(always)]
     fn cosine_near(self, c: Fx, square: u64, length: &mut EvenLength) -> Option<Fx> {
         self.facing(Vec3::unit_component_near(c, square, length)?)
     }
 
     /// The cosine with the facing normal of a unit vector whose component along the axis is
     /// `c`: `None` where it is not positive.
-    #[inline(always)]
     fn facing(self, c: Fx) -> Option<Fx> {
         let cos = if self.negative { -c } else { c };
         (cos > Fx::ZERO).then_some(cos)
     }
 
     /// `v` with its two components across the axis first and the one along it last (as `z`).
-    #[inline(always)]
     fn across(self, v: Vec3) -> Vec3 {
         match self.index {
             0 => Vec3::new(v.y, v.z, v.x),
@@ -402,14 +392,13 @@ struct Offsets {
 // The set-up out of line on RV32, where its 64-bit shifts are long sequences which a stretch
 // makes once; the step in line on every chip, in each loop that walks a stretch.
 impl Offsets {
-    #[cfg_attr(target_arch = "riscv32", inline(never))]
     fn new(scale: Scale, start: Vec3, step: Vec3) -> Self {
         // Past 63 every offset rounds to 0, and stays there (`offset` says why).
         let (m, shift) = match scale.shift {
             shift @ 1..64 => (scale.m, shift as u32),
             _ => (0, 1),
         };
-        let p = |c: Fx| fx::wide_mul_once(c.to_bits(), m);
+        let p = |c: Fx| fx::wide_mul(c.to_bits(), m);
         let [x, y, z] =
             [start.x, start.y, start.z].map(|c| split(p(c) + (1 << (shift - 1)), shift));
         let [sx, sy, sz] = [step.x, step.y, step.z].map(|c| split(p(c), shift));
@@ -450,7 +439,6 @@ impl Offsets {
 
     /// Component `i` on to the next column: the remainders' sum carries out of the word
     /// exactly when it reaches `2^shift`, and the carry goes into the quotient.
-    #[inline(always)]
     fn step_component(&mut self, i: usize) {
         let (sum, carry) = self.remainder[i].overflowing_add(self.step_remainder[i]);
         self.remainder[i] = sum;
@@ -463,7 +451,6 @@ impl Offsets {
 /// `v`'s quotient by `2^shift`, floored (its low 32 bits), and its remainder, moved to the top
 /// of a word, for `shift` in 1..64. Out of line on RV32, where its two shifts are long
 /// sequences that six values a stretch can share.
-#[cfg_attr(target_arch = "riscv32", inline(never))]
 fn split(v: i64, shift: u32) -> (i32, u64) {
     ((v >> shift) as i32, (v as u64) << (64 - shift))
 }

@@ -47,12 +47,18 @@ impl<'a> RowRays<'a> {
     /// The rays of display row `row`, which must be a row of the screen (the ray budget keeps
     /// its directions, and the squares carried along it, in range).
     pub(crate) fn new(camera: &'a Camera, row: u16) -> Self {
-        let towards = camera.row_start(row);
+        RowRays::starting(camera, camera.row_start(row), camera.cols())
+    }
+
+    /// `count` rays from the eye, the first along `towards` (a direction from
+    /// [`Camera::row_start`] stepped along its row), each further one a column to the right:
+    /// the rays of a run of columns, which must lie on the screen.
+    pub(crate) fn starting(camera: &'a Camera, towards: Vec3, count: u16) -> Self {
         RowRays {
             camera,
             towards,
             squares: RowSquares::new(towards, camera.column_step()),
-            left: camera.cols(),
+            left: count,
         }
     }
 }
@@ -69,7 +75,7 @@ impl Iterator for RowRays<'_> {
         let ray = self
             .camera
             .ray_along(self.towards, self.squares.now(self.towards));
-        self.towards = self.towards + self.camera.column_step();
+        self.towards = self.towards.plus(self.camera.column_step());
         self.squares.step();
         Some(ray)
     }
@@ -115,12 +121,11 @@ impl RowSquares {
     /// Starting at `start` (`w`) and stepping by `step` (`r`); both within the camera's
     /// bounds (components below 2¹⁵), so each product and sum fits 64 bits.
     // Out of line: once a run, and long where 64-bit products are library calls.
-    #[inline(never)]
     pub(crate) fn new(start: Vec3, step: Vec3) -> Self {
-        let r2 = step.length_squared_once() as i64;
+        let r2 = step.length_squared_wide() as i64;
         RowSquares {
-            square: start.length_squared_once(),
-            increment: 2 * start.dot_wide_once(step) + r2,
+            square: start.length_squared_wide(),
+            increment: 2 * start.dot_wide_exact(step) + r2,
             growth: 2 * r2,
         }
     }

@@ -108,7 +108,6 @@ impl<'a, const N: usize, const L: usize> Runs<'a, N, L> {
     }
 
     /// The next run: its first column, the column after its last, and the objects to try.
-    #[inline(never)]
     pub(crate) fn next_run(&mut self) -> Option<(u16, u16, u64)> {
         if self.col >= self.cols {
             return None;
@@ -158,7 +157,7 @@ impl<'a, const N: usize, const L: usize> Runs<'a, N, L> {
 /// `n·w` has its sign (`Plane::hit_from`, which takes both exactly). `n·w` is linear along
 /// the run, so where neither end has that sign no column between them has.
 fn misses_all(normal: Vec3, numerator: i64, first: Vec3, last: Vec3) -> bool {
-    let (a, b) = (normal.dot_wide_once(first), normal.dot_wide_once(last));
+    let (a, b) = (normal.dot_wide_exact(first), normal.dot_wide_exact(last));
     match numerator {
         0 => true, // the eye on the plane: every ray leaves it or runs along it
         ..0 => a.min(b) >= 0,

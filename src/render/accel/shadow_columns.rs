@@ -52,7 +52,6 @@ impl RunLine {
 
     /// The columns (indices into the run) whose hits' shadow rays towards `light` the sphere
     /// `sphere` may block, on a plane whose normal is `normal`: empty where it blocks none.
-    #[inline(never)]
     pub(crate) fn shadowed_by(&self, normal: Vec3, light: Vec3, sphere: &Sphere) -> Range<usize> {
         let Some(last) = self.len.checked_sub(1) else {
             return 0..0;
@@ -60,7 +59,7 @@ impl RunLine {
         // Where an end lies past the reach, the hits' line is not followed: points far out
         // would leave the products' budget. Within it at both ends, every column is within it
         // (‖w(k)‖² is convex in `k`), and every hit within FAR of the eye.
-        let within = |k: usize| self.towards_column(k).length_squared_once() <= self.reach;
+        let within = |k: usize| self.towards_column(k).length_squared_wide() <= self.reach;
         if !(within(0) && within(last)) {
             return 0..self.len;
         }
@@ -74,9 +73,9 @@ impl RunLine {
         // by at most half a unit of `P` a component, `|g|₁ / 2` in Q32.32: the line through
         // its values at the ends is within `slack` of every column's (the ends' roundings and
         // the column's), and the coarse shifts move it by under two coarse units.
-        let g = normal.cross_once(sphere.centre() - light);
+        let g = normal.cross(sphere.centre() - light);
         let slack = g.l1_raw();
-        let side = |p: Vec3| g.dot_wide_once(p) >> COARSE;
+        let side = |p: Vec3| g.dot_wide_exact(p) >> COARSE;
         // The farthest a hit lies from the light: at most the farther end's exact distance
         // (convexity), which `length` truncates by under a unit and the ends' and the
         // column's roundings move by under a unit each. (Taken again over the columns found,

@@ -38,7 +38,6 @@ const ROUNDED_DIRECTION: Fx = Fx::from_bits(2);
 /// spheres that lie too far from the row's `Π` for each of those planes. `!0` where nothing
 /// is ruled out: shadows off, no plane, or more than 32 objects (the shadow sets' limit).
 // Once a row, and a few hundred bytes of code: not copied into each caller.
-#[inline(never)]
 pub(crate) fn row_shadowers<const N: usize, const L: usize>(
     scene: &Scene<N, L>,
     eye: Vec3,
@@ -82,10 +81,10 @@ fn far_from_row<const N: usize, const L: usize>(
     let normal = plane.normal();
     // The light's height above the plane: shadow rays from it are at least `reach` long.
     // Lights, eyes and planes' points lie within ±LIMIT: no difference here saturates.
-    let height = normal.dot_once(light - plane.point());
+    let height = normal.dot_units(light - plane.point());
     let reach = height.abs() - OFF_PLANE;
     // The sine of the angle between the plane and the row's plane, less its rounding.
-    let sin_row = row_normal.cross_once(normal).length() - Fx::from_bits(1 << 3);
+    let sin_row = row_normal.cross(normal).length() - Fx::from_bits(1 << 3);
     if reach < Fx::from_bits(1 << 14) || sin_row < Fx::from_bits(1 << 10) {
         return None; // a light within ¼ of the plane, or a row's plane within 1/64 of it
     }
@@ -93,7 +92,7 @@ fn far_from_row<const N: usize, const L: usize>(
     // light, `height · m − (m·(light − eye)) · n`. Its rounding, from `m`'s 2⁻¹⁴ and the
     // products', is below `error`.
     let to_light = light - eye;
-    let across = row_normal.dot_once(to_light);
+    let across = row_normal.dot_units(to_light);
     let pi = scaled(row_normal, height) - scaled(normal, across);
     let error =
         Fx::from_bits(((height.abs().to_bits() as i64 + to_light.l1_raw()) >> 14) as i32 + 12);
@@ -128,7 +127,7 @@ fn far_from_row<const N: usize, const L: usize>(
         let limit = wide
             .saturating_add(product(distance + wide, angle))
             .saturating_add(Fx::from_bits(1 << 8));
-        if pi.dot_once(to_centre).abs() > limit {
+        if pi.dot_units(to_centre).abs() > limit {
             ruled_out |= 1 << index;
         }
     }
@@ -144,7 +143,6 @@ pub(crate) fn blocking_radius(radius: Fx) -> Fx {
 }
 
 /// `v.scale(s)`, out of line: once a row and light, twice.
-#[inline(never)]
 fn scaled(v: Vec3, s: Fx) -> Vec3 {
     v.scale(s)
 }
@@ -152,7 +150,6 @@ fn scaled(v: Vec3, s: Fx) -> Vec3 {
 /// `a.saturating_mul(b)`, out of line: twice a row and light. The exact product floored to
 /// Q16.16 and held within range, as `saturating_mul` forms it, by the chip's cheapest exact
 /// product (`fx::wide_mul`): on the Cortex-M0 the library's is four calls of a long routine.
-#[inline(never)]
 fn product(a: Fx, b: Fx) -> Fx {
     let floored = fx::wide_mul(a.to_bits(), b.to_bits()) >> 16;
     Fx::from_bits(floored.clamp(i32::MIN as i64, i32::MAX as i64) as i32)
@@ -160,7 +157,6 @@ fn product(a: Fx, b: Fx) -> Fx {
 
 /// `num / den` for positive `den`, rounded up, or `None` from 1 up: an angle that wide rules
 /// nothing out. Once a row and light: a plain division.
-#[inline(never)]
 fn quotient(num: Fx, den: Fx) -> Option<Fx> {
     let (num, den) = (num.to_bits(), den.to_bits());
     if num < 0 || den <= 0 || num >= den {

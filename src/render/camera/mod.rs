@@ -11,7 +11,7 @@ use crate::check::{self, within};
 use crate::error::{CameraProblem, Error, Quantity};
 use crate::geometry::ray::Ray;
 use crate::numbers::fx::{self, FRAC, Fx};
-use crate::numbers::isqrt::{isqrt, isqrt_once};
+use crate::numbers::isqrt::isqrt;
 use crate::numbers::vec3::Vec3;
 
 mod builder;
@@ -205,7 +205,6 @@ fn check_budget(view: Fx, aspect: Fx, cols: u16, rows: u16) -> Result<(), Error>
 ///
 /// Out of line: inlined into [`check_budget`] it took about 230 bytes more flash on a
 /// Cortex-M0, on a path only a refused camera takes.
-#[inline(never)]
 fn doubled_angle(atan_x: u64, atan_y: u64) -> u64 {
     /// atan(2⁻ⁱ) as a doubled angle in 2⁻³² millidegrees, rounded: `atan(2⁻ⁱ)·(360 000/π)·2³²`.
     const TURNS: [i64; 16] = [
@@ -253,7 +252,6 @@ fn doubled_angle(atan_x: u64, atan_y: u64) -> u64 {
 /// `v`'s unit vector ([`Vec3::try_normalize`]), out of line: the look-at set-up normalises
 /// three vectors, and one copy of the code serves all three. Inlined into a firmware's set-up
 /// they took about 470 bytes more flash on a Cortex-M4F.
-#[inline(never)]
 fn unit(v: Vec3) -> Option<Vec3> {
     v.try_normalize()
 }
@@ -479,11 +477,11 @@ impl Camera {
         // pixel units (raw components within 2¹⁶), `down` at most 4 pixels long (raw 2¹⁸) and
         // `forward` at most 16 384 (raw 2³⁰), so each sum is below 2⁵⁷.
         // On the screen (and for a few thousand pixels about it) the offsets fit 32 bits: the
-        // products of two `i32`s, as the work of a row takes them (`fx::wide_mul_once`).
+        // products of two `i32`s, as the work of a row takes them (`fx::wide_mul`).
         let small = kx == kx as i32 as i64 && ky == ky as i32 as i64;
         let times = |a: Fx, k: i64| {
             if small {
-                fx::wide_mul_once(a.to_bits(), k as i32)
+                fx::wide_mul(a.to_bits(), k as i32)
             } else {
                 a.to_bits() as i64 * k
             }
@@ -607,7 +605,7 @@ impl Camera {
     /// Any `u16` row: off the screen, its direction towards column 0 is scaled to fit.
     pub(crate) fn row_plane_normal(&self, row: u16) -> Option<Vec3> {
         self.right
-            .cross_once(self.towards(0, row.into()))
+            .cross(self.towards(0, row.into()))
             .try_normalize()
     }
 
@@ -626,24 +624,23 @@ impl Camera {
     /// distance), and by 2⁻⁷ for the sums' own units; one column each side covers the slopes'
     /// rounding and the half column of `cols/2`.
     // Out of line: once a row for each sphere near it, and not short.
-    #[inline(never)]
     pub(crate) fn column_span(&self, centre: Vec3, radius: Fx) -> Option<(i16, i16)> {
         let to_centre = centre - self.eye;
         let view = self.forward.try_normalize()?;
         // In units of 2⁻⁸, each value below 2²¹ and each product of two below 2⁴²: the centre
         // and the eye lie within ±1024, a ball's radius within 2048. Flooring `x` and `z` moves
         // the centre by less than √2 units, which the radius, rounded up, grows by 2 to cover.
-        let (x, z) = (self.right.dot_once(to_centre), view.dot_once(to_centre));
+        let (x, z) = (self.right.dot_units(to_centre), view.dot_units(to_centre));
         let (x, z) = (x.to_bits() >> 8, z.to_bits() >> 8);
         let widened = radius.to_bits() + (to_centre.l1_raw() >> 12) as i32;
         let r = ((widened + 255) >> 8) + 2;
         if z - r < 1 << 4 {
             return None;
         }
-        let product = fx::wide_mul_once;
+        let product = fx::wide_mul;
         let below = product(z - r, z + r);
         // √k rounded up, so that the tangents' spread is not understated.
-        let root = isqrt_once((product(x, x) + below) as u64) as i32 + 1;
+        let root = isqrt((product(x, x) + below) as u64) as i32 + 1;
         let (middle, spread) = (product(x, z), product(r, root));
         // The slopes in Q16.16, rounded towards zero: a numerator below 2⁴³, shifted, fits.
         let below = NonZeroU64::new(below as u64)?;

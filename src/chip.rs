@@ -1,0 +1,25 @@
+//! The instruction set fixray's arithmetic follows: the few facts about a chip family that
+//! change the best exact form of a product, a shift or a bit length. `build.rs` names the
+//! family (`fixray_chip`) from the target; this is the one place that reads it.
+//!
+//! Every path these facts choose computes the same values as the other; the host's tests run
+//! each family's paths by forcing the family (`RUSTFLAGS='--cfg fixray_chip="armv6m"'`), and
+//! ARCHITECTURE.md lists them with what each saves.
+
+/// ARMv6-M (Cortex-M0/M0+), which multiplies 32 × 32 → 32 only: there the compiler's 64-bit
+/// product is a call to a full 64 × 64 multiply, and four 16-bit partial products are shorter.
+pub(crate) const NO_LONG_MULTIPLY: bool = cfg!(fixray_chip = "armv6m");
+
+/// ARMv6-M, which has no divide instruction: there a 32-bit division is a library call.
+pub(crate) const NO_DIVIDE: bool = cfg!(fixray_chip = "armv6m");
+
+/// Chips without a count-leading-zeros instruction: ARMv6-M, and RV32 without Zbb. There a bit
+/// length comes from comparisons and a table.
+pub(crate) const NO_CLZ: bool = cfg!(any(
+    fixray_chip = "armv6m",
+    all(fixray_chip = "riscv32", not(target_feature = "zbb"))
+));
+
+/// Chips where a 64-bit shift by a variable amount is a library call (ARMv6-M) or a branching
+/// sequence (RV32): there a rounded shift goes by 32-bit words.
+pub(crate) const WORD_SHIFTS: bool = cfg!(any(fixray_chip = "armv6m", fixray_chip = "riscv32"));
