@@ -17,6 +17,11 @@
 //! - `check_camera`, `check_hit`, `check_row`: the oracles for cameras, hits and rows;
 //! - `drawing`: a recording display ([`Recorder`]) and the oracles for drawing;
 //! - `case`: one random [`Case`] and every check run on it.
+//!
+//! `accuracy.rs` sits here too but is not declared: it measures fixray against the
+//! `fixray-reference` model, which the fuzz crate does not depend on, so its users
+//! (`tests/accuracy.rs`, `tests/edges.rs`, `examples/accuracy.rs`) include it alone with
+//! `#[path]`.
 #![allow(dead_code)] // each user of this module calls a different part of it
 
 mod camera_spec;
