@@ -10,7 +10,8 @@
 //!
 //! - [`Viewport::picture`] makes a [`Picture`], an embedded-graphics
 //!   [`Drawable`](embedded_graphics::Drawable) with a row buffer of its own:
-//!   `view.picture::<Rgb565, 320>()?.draw(&mut display)?`.
+//!   `view.picture::<Rgb565, 320>()?.draw(&mut display).map_err(DrawError::Display)?`
+//!   (see [Errors](#errors) for the `map_err`).
 //! - [`Viewport::bands`] and [`Viewport::render_rows`], with a buffer the caller owns, draw
 //!   band by band so the caller can do other work between bands and pick the band height.
 //!
@@ -39,7 +40,10 @@
 //! own error, unchanged, when the driver fails. `DrawError` converts from `Error`, so `?`
 //! joins set-up and drawing in one function. [`Picture::draw`](embedded_graphics::Drawable::draw)
 //! alone returns the driver's error as it is, as embedded-graphics' `Drawable` prescribes;
-//! nothing is left for fixray to refuse by then.
+//! nothing is left for fixray to refuse by then. Drivers' errors seldom implement
+//! `core::error::Error` (`mipidsi`'s, `st7735-lcd`'s and `ili9341`'s do not), so `?` cannot
+//! join one with fixray's as it is: wrap it, `.draw(&mut display).map_err(DrawError::Display)?`,
+//! and the function returns `DrawError` (`examples/driver.rs` does, on `mipidsi`).
 //!
 //! # Buffered displays: `flush`
 //!
@@ -49,14 +53,16 @@
 //! fixray cannot call for you, as it knows only the `DrawTarget`. Draw, then flush:
 //!
 //! ```ignore
-//! // ssd1306, 128 × 64 in buffered-graphics mode, BinaryColor.
+//! // ssd1306, 128 × 64 in buffered-graphics mode, BinaryColor; in a function that returns
+//! // `Result<_, DrawError<DisplayError>>`.
 //! let mut display = Ssd1306::new(interface, DisplaySize128x64, DisplayRotation::Rotate0)
 //!     .into_buffered_graphics_mode();
-//! display.init()?;
+//! display.init().map_err(DrawError::Display)?;
 //! Viewport::at(&scene, &camera, Point::zero())
 //!     .picture::<BinaryColor, 128>()?
-//!     .draw(&mut display)?;
-//! display.flush()?; // nothing shows until the buffer is sent
+//!     .draw(&mut display)
+//!     .map_err(DrawError::Display)?;
+//! display.flush().map_err(DrawError::Display)?; // nothing shows until the buffer is sent
 //! ```
 //!
 //! Drivers that write each `fill_contiguous` straight to the panel (`mipidsi`, `ili9341`,
