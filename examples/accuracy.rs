@@ -13,7 +13,7 @@
 //! hit the same object. The difference image shows the classic scene at 160 × 128, black
 //! where the renderers agree exactly and brighter where they differ (|Δ| × 32 per channel).
 
-#[path = "../tests/support/accuracy.rs"]
+#[path = "../tests/common/accuracy.rs"]
 mod accuracy;
 
 use accuracy::Accuracy;

@@ -1,10 +1,11 @@
 //! fixray on a real display driver: the demo scene drawn through `mipidsi` onto an ST7789
-//! 240 × 240 panel, 16 rows at a time.
+//! 240 × 240 panel, twice: 16 rows at a time with a buffer of the caller's, then in one call
+//! as an embedded-graphics `Drawable` (a `Picture`).
 //!
 //! The SPI bus and the data/command pin are fakes that play the panel's part: they decode the
 //! bytes the driver sends (column and row windows, then pixel data after each memory write)
-//! into the panel's memory. At the end every pixel must have crossed the bus exactly once and
-//! the panel must hold the host's own render of the scene, converted to `Rgb565` by
+//! into the panel's memory. After each draw every pixel must have crossed the bus exactly once
+//! and the panel must hold the host's own render of the scene, converted to `Rgb565` by
 //! embedded-graphics. So this example compiles against the driver as it is published and
 //! fails if the picture does not arrive whole; on a board, the fakes are the HAL's SPI device,
 //! pins and delay, and nothing else changes.
@@ -23,7 +24,7 @@ use embedded_graphics::prelude::*;
 use embedded_hal::delay::DelayNs;
 use embedded_hal::digital::{ErrorType as PinErrorType, OutputPin};
 use embedded_hal::spi::{ErrorType as SpiErrorType, Operation, SpiDevice};
-use fixray::{Rgb, Viewport, demo, render_row};
+use fixray::{Camera, DrawError, Rgb, Scene, Viewport, demo, render_row};
 use mipidsi::Builder;
 use mipidsi::interface::SpiInterface;
 use mipidsi::models::ST7789;
@@ -43,20 +44,46 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         .invert_colors(ColorInversion::Inverted)
         .init(&mut delay)
         .expect("the display starts");
+    panel.borrow_mut().bytes = 0; // the draws' bytes only, not the start-up commands'
 
     // The picture: a camera the size of the display, drawn 16 rows per bus transfer.
     let (scene, camera) = (demo::scene(), demo::camera(240, 240)?);
     let viewport = Viewport::at(&scene, &camera, Point::zero());
     let mut band = [Rgb::BLACK; 240 * 16];
     viewport.render(&mut band, &mut display)?;
+    let banded = shows_the_scene(&mut panel.borrow_mut(), &scene, &camera)?;
 
-    // Every pixel went over the bus once, and the panel shows the scene.
-    let panel = panel.borrow();
+    // Or in one call, a row at a time. `Drawable::draw` returns the driver's own error, which
+    // `DrawError::Display` holds as `render`'s errors do.
+    viewport
+        .picture::<Rgb565, 240>()?
+        .draw(&mut display)
+        .map_err(DrawError::Display)?;
+    let pictured = shows_the_scene(&mut panel.borrow_mut(), &scene, &camera)?;
+
+    let pixels = usize::from(SIZE) * usize::from(SIZE);
+    for (how, (writes, bytes)) in [("in bands", banded), ("as a picture", pictured)] {
+        println!(
+            "driver: {pixels} pixels {how} in {writes} memory writes, {bytes} bytes on the bus; \
+             the panel shows the demo scene"
+        );
+    }
+    Ok(())
+}
+
+/// Checks that every pixel went over the bus once since the last check and that the panel
+/// shows the scene, then blanks the panel for the next draw. Returns the memory writes and
+/// the bytes the draw took.
+fn shows_the_scene(
+    panel: &mut Panel,
+    scene: &Scene<8>,
+    camera: &Camera,
+) -> Result<(usize, usize), fixray::Error> {
     let pixels = usize::from(SIZE) * usize::from(SIZE);
     assert_eq!(panel.pixels_written, pixels, "pixels sent over the bus");
     let mut row = [Rgb::BLACK; SIZE as usize];
     for y in 0..SIZE {
-        render_row(&scene, &camera, y.into(), &mut row)?;
+        render_row(scene, camera, y.into(), &mut row)?;
         for (x, pixel) in row.iter().enumerate() {
             let expected = Rgb565::from(Rgb888::new(pixel.r, pixel.g, pixel.b));
             let shown = panel.memory[usize::from(y) * usize::from(SIZE) + x];
@@ -67,11 +94,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             );
         }
     }
-    println!(
-        "driver: {pixels} pixels in {} memory writes, {} bytes on the bus; the panel shows the demo scene",
-        panel.memory_writes, panel.bytes
-    );
-    Ok(())
+    let sent = (panel.memory_writes, panel.bytes);
+    panel.memory.fill(0);
+    (panel.pixels_written, panel.memory_writes, panel.bytes) = (0, 0, 0);
+    Ok(sent)
 }
 
 /// The panel's side of the bus: enough of the ST7789's command set to place pixel data.

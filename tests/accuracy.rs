@@ -3,7 +3,7 @@
 //! The thresholds are the ones the README states for the demo scene: the object hit agrees on
 //! at least 99.9 % of pixels, and where it agrees every 8-bit channel is within ±2.
 
-#[path = "support/accuracy.rs"]
+#[path = "common/accuracy.rs"]
 mod accuracy;
 
 use accuracy::Accuracy;

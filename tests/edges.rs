@@ -2,7 +2,7 @@
 //! an eye placed exactly on a surface. Each test is a reproducer of a wrong picture that an
 //! outside check once found.
 
-#[path = "support/accuracy.rs"]
+#[path = "common/accuracy.rs"]
 mod accuracy;
 
 use fixray::{Camera, Fx, Light, Material, Plane, Rgb, Scene, Size, Sphere, Vec3, render_row};

@@ -10,7 +10,8 @@
 //!
 //! - [`Viewport::picture`] makes a [`Picture`], an embedded-graphics
 //!   [`Drawable`](embedded_graphics::Drawable) with a row buffer of its own:
-//!   `view.picture::<Rgb565, 320>()?.draw(&mut display)?`.
+//!   `view.picture::<Rgb565, 320>()?.draw(&mut display).map_err(DrawError::Display)?`
+//!   (see [Errors](#errors) for the `map_err`).
 //! - [`Viewport::bands`] and [`Viewport::render_rows`], with a buffer the caller owns, draw
 //!   band by band so the caller can do other work between bands and pick the band height.
 //!
@@ -39,7 +40,10 @@
 //! own error, unchanged, when the driver fails. `DrawError` converts from `Error`, so `?`
 //! joins set-up and drawing in one function. [`Picture::draw`](embedded_graphics::Drawable::draw)
 //! alone returns the driver's error as it is, as embedded-graphics' `Drawable` prescribes;
-//! nothing is left for fixray to refuse by then.
+//! nothing is left for fixray to refuse by then. Drivers' errors seldom implement
+//! `core::error::Error` (`mipidsi`'s, `st7735-lcd`'s and `ili9341`'s do not), so `?` cannot
+//! join one with fixray's as it is: wrap it, `.draw(&mut display).map_err(DrawError::Display)?`,
+//! and the function returns `DrawError` (`examples/driver.rs` does, on `mipidsi`).
 //!
 //! # Buffered displays: `flush`
 //!
@@ -49,14 +53,16 @@
 //! fixray cannot call for you, as it knows only the `DrawTarget`. Draw, then flush:
 //!
 //! ```ignore
-//! // ssd1306, 128 × 64 in buffered-graphics mode, BinaryColor.
+//! // ssd1306, 128 × 64 in buffered-graphics mode, BinaryColor; in a function that returns
+//! // `Result<_, DrawError<DisplayError>>`.
 //! let mut display = Ssd1306::new(interface, DisplaySize128x64, DisplayRotation::Rotate0)
 //!     .into_buffered_graphics_mode();
-//! display.init()?;
+//! display.init().map_err(DrawError::Display)?;
 //! Viewport::at(&scene, &camera, Point::zero())
 //!     .picture::<BinaryColor, 128>()?
-//!     .draw(&mut display)?;
-//! display.flush()?; // nothing shows until the buffer is sent
+//!     .draw(&mut display)
+//!     .map_err(DrawError::Display)?;
+//! display.flush().map_err(DrawError::Display)?; // nothing shows until the buffer is sent
 //! ```
 //!
 //! Drivers that write each `fill_contiguous` straight to the panel (`mipidsi`, `ili9341`,
@@ -72,8 +78,8 @@
 //! | --- | --- |
 //! | row buffer, `[Rgb; 320]` | 960 |
 //! | the [`Viewport`] (two references and a point, 32-bit target) | 16 |
-//! | stack below [`Viewport::render`], Cortex-M0, classic scene (the deepest) | 3 540 |
-//! | **total** | **about 4.5 KB** |
+//! | stack below [`Viewport::render`], the deepest chip and scene | under 4 KB |
+//! | **total** | **under 5 KB** |
 //!
 //! A framebuffer for the same display would take 230 400 bytes. The scene (`Scene<8>`, about
 //! 1 KB with its shadow cones) and camera (56 bytes) are the caller's, wherever it keeps
@@ -82,26 +88,15 @@
 //! `W` the width it was made for), so its total is the same, all of it stack.
 //!
 //! The stack is measured on each chip under QEMU by the firmware's `draw` binary
-//! (`firmware/src/bin/draw.rs`, run by `scripts/firmware.sh`; `opt-level = 3`, fat LTO): it
-//! paints the free stack with a pattern, draws the demo and the classic scene at 160 × 128
-//! onto an `Rgb565` display that digests every pixel (the digest matches the host's), and
-//! takes the deepest word no longer painted, counted from the stack pointer at the call.
-//! Bytes, demo scene / classic scene:
-//!
-//! | chip | [`Viewport::render`], one-row buffer | `picture::<Rgb565, 160>()?.draw` |
-//! | --- | ---: | ---: |
-//! | Cortex-M0 (`thumbv6m-none-eabi`) | 2 972 / 3 724 | 3 468 / 4 220 |
-//! | Cortex-M3 (`thumbv7m-none-eabi`) | 2 432 / 3 040 | 2 936 / 3 544 |
-//! | Cortex-M4F (`thumbv7em-none-eabihf`) | 2 440 / 3 052 | 2 944 / 3 556 |
-//! | RV32IMC (`riscv32imc-unknown-none-elf`) | 2 156 / 2 892 | 2 652 / 3 388 |
-//!
-//! The classic scene, with mirrors, glass, highlights and three lights' shadows, takes the
-//! deepest path; a picture adds its row buffer (480 bytes at 160 columns) and a few words to
-//! the render below it. The render's buffer is the caller's and not counted, and nothing on the
-//! stack is sized by the picture, so other sizes take about the same. The display's
-//! `fill_contiguous` is included; it runs beside `render_row` rather than below it, so a real
-//! driver adds to the total only where it needs more than that branch. Nothing recurses:
-//! mirror bounces are a loop, so the mirror depth does not change the figure either.
+//! (`firmware/src/bin/draw.rs`, run by `scripts/firmware.sh`), through [`Viewport::render`]
+//! and through a [`Picture`], for the demo and the classic scene; the figures are the README's
+//! table *Stack below a draw*, and the deepest, the Cortex-M0's render of the classic scene
+//! (mirrors, glass, highlights and three lights' shadows), is under 4 KB. A picture adds its
+//! row buffer and a few words to that. Nothing on the stack is sized by the picture, and
+//! nothing recurses (mirror and glass rays are a loop), so neither the display's size nor the
+//! mirror depth changes the figure. The display's `fill_contiguous` is included; it runs
+//! beside `render_row` rather than below it, so a real driver adds to the total only where it
+//! needs more than that branch.
 
 mod clip;
 mod color;
