@@ -153,13 +153,10 @@ mod tests {
     fn every_neighbour_of_a_square_below_and_about_two_to_the_44() {
         // Below 2⁴⁴ the whole steps go by a residual from the low words alone: every root up
         // to 2²² at both ends of its interval, `r²` and `r² + 2r`, and their neighbours, where
-        // a step taken one short or one too far shows; then both sides of 2⁴⁴ itself. Each
-        // form of the steps: `isqrt`'s and the sphere test's in line.
+        // a step taken one short or one too far shows; then both sides of 2⁴⁴ itself.
         let check = |x: u64| {
-            let forms = [isqrt(x), super::in_line_by::<true>(x)];
-            for (form, r) in forms.into_iter().enumerate() {
-                assert!(is_floor_sqrt(x, r), "form {form}: isqrt({x}) = {r}");
-            }
+            let r = isqrt(x);
+            assert!(is_floor_sqrt(x, r), "isqrt({x}) = {r}");
         };
         for r in 1u64..=1 << 22 {
             for x in [r * r - 1, r * r, r * r + 2 * r, r * r + 2 * r + 1] {
