@@ -23,3 +23,30 @@ pub(crate) const NO_CLZ: bool = cfg!(any(
 /// Chips where a 64-bit shift by a variable amount is a library call (ARMv6-M) or a branching
 /// sequence (RV32): there a rounded shift goes by 32-bit words.
 pub(crate) const WORD_SHIFTS: bool = cfg!(any(fixray_chip = "armv6m", fixray_chip = "riscv32"));
+
+#[cfg(test)]
+mod tests {
+    extern crate std;
+
+    /// The family this build is for, as `build.rs` named it or `--cfg` forced it.
+    const FAMILY: &str = if cfg!(fixray_chip = "armv6m") {
+        "armv6m"
+    } else if cfg!(fixray_chip = "armv7m") {
+        "armv7m"
+    } else if cfg!(fixray_chip = "riscv32") {
+        "riscv32"
+    } else {
+        "other"
+    };
+
+    #[test]
+    fn the_family_asked_for_is_the_one_in_force() {
+        // CI forces each family in turn and says which in `FIXRAY_CHIP`: a build that did not
+        // take it would run the host's paths again and prove nothing.
+        if let Ok(want) = std::env::var("FIXRAY_CHIP") {
+            assert_eq!(FAMILY, want);
+        }
+        assert_eq!(super::NO_LONG_MULTIPLY, FAMILY == "armv6m");
+        assert_eq!(super::WORD_SHIFTS, matches!(FAMILY, "armv6m" | "riscv32"));
+    }
+}
