@@ -30,6 +30,9 @@ pub(crate) const HIT_REACH: i32 = LIMIT.to_bits() + FAR.to_bits();
 pub(crate) const FRAC: u32 = 16;
 
 pub(crate) use crate::chip::{NO_CLZ, NO_DIVIDE, NO_LONG_MULTIPLY};
+use crate::numbers::split::{
+    split_mul, split_mul_fits, split_mul_high, split_mul_u32, split_mul_unit,
+};
 
 /// The product of two Q16.16 raw values, exact, as a Q32.32 raw value.
 #[inline]
@@ -52,43 +55,6 @@ pub(crate) const fn wide_mul_u32(a: u32, b: u32) -> u64 {
     } else {
         a as u64 * b as u64
     }
-}
-
-/// [`wide_mul`] where there is [`NO_LONG_MULTIPLY`]: four 16-bit partial products are exact
-/// in 32 bits (`|a_hi · b_lo| < 2³¹`, since `|a_hi| ≤ 2¹⁵` and `b_lo < 2¹⁶`). Compiled
-/// everywhere, so the host tests check it.
-#[inline]
-const fn split_mul(a: i32, b: i32) -> i64 {
-    let (a_lo, a_hi) = (a & 0xFFFF, a >> 16);
-    let (b_lo, b_hi) = (b & 0xFFFF, b >> 16);
-    let low = (a_lo as u32 * b_lo as u32) as i64;
-    let middle = (a_hi * b_lo) as i64 + (a_lo * b_hi) as i64;
-    (((a_hi * b_hi) as i64) << 32) + (middle << 16) + low
-}
-
-/// [`wide_mul_u32`] by four 16-bit partial products; see [`split_mul`].
-#[inline]
-const fn split_mul_u32(a: u32, b: u32) -> u64 {
-    let (a_lo, a_hi) = (a & 0xFFFF, a >> 16);
-    let (b_lo, b_hi) = (b & 0xFFFF, b >> 16);
-    let middle = (a_hi * b_lo) as u64 + (a_lo * b_hi) as u64;
-    (((a_hi * b_hi) as u64) << 32) + (middle << 16) + (a_lo * b_lo) as u64
-}
-
-/// `⌊a · b / 2³²⌋`, the high word of [`split_mul`]'s product, in 32-bit operations: with the
-/// middle products `m = m_hi·2¹⁶ + m_lo` split again, the sum below the high word,
-/// `m1_lo + m2_lo + ⌊lo/2¹⁶⌋`, is below 3·2¹⁶, and only its carry reaches the high word. On
-/// the Cortex-M0 the 64-bit shift and sums of the whole product are most of its cost.
-/// Compiled everywhere, so the host tests check it.
-#[inline]
-const fn split_mul_high(a: i32, b: i32) -> i32 {
-    let (a_lo, a_hi) = (a & 0xFFFF, a >> 16);
-    let (b_lo, b_hi) = (b & 0xFFFF, b >> 16);
-    // |a_hi|, |b_hi| ≤ 2¹⁵ and the low halves below 2¹⁶: each product fits its type.
-    let (m1, m2) = (a_hi * b_lo, a_lo * b_hi);
-    let low = (a_lo as u32 * b_lo as u32) >> 16;
-    let carry = ((m1 & 0xFFFF) as u32 + (m2 & 0xFFFF) as u32 + low) >> 16;
-    a_hi * b_hi + (m1 >> 16) + (m2 >> 16) + carry as i32
 }
 
 /// `(a · b) / 2^shift` rounded half up, for `1 ≤ shift ≤ 63`: the scaling step of
@@ -376,44 +342,6 @@ pub(crate) const fn mul_unit(t: Fx, u: Fx) -> Fx {
     } else {
         ((t as i64 * u as i64 + (1 << (FRAC - 1))) >> FRAC) as i32
     })
-}
-
-/// [`mul_fits`] where there is [`NO_LONG_MULTIPLY`]. The product fits 32 bits, so
-/// [`split_mul_unit`]'s sum modulo 2³² is exact; and for `0 ≤ a < 1`, the brightness of a
-/// surface lit by one light, `a · b` and the rounding term stay below 2³² − 2¹⁵: one 32-bit
-/// product. Compiled everywhere, so the host tests check it.
-#[inline]
-const fn split_mul_fits(a: i32, b: i32) -> i32 {
-    if a >= 0 && a < 1 << FRAC {
-        ((a as u32 * b as u32 + (1 << (FRAC - 1))) >> FRAC) as i32
-    } else {
-        split_mul_unit(a, b)
-    }
-}
-
-/// `t · u` in two parts of 32-bit products, for a factor `u` below 2¹⁷ in magnitude: with
-/// `u = u_hi·2¹⁶ + u_lo` and `t = t_hi·2¹⁶ + t_lo` (`u_lo`, `t_lo` in 0..2¹⁶),
-/// `t·u = 2¹⁶·(t·u_hi + t_hi·u_lo) + t_lo·u_lo`. The first part comes modulo 2³² (exact
-/// whenever what it goes into fits 32 bits), the second, below 2³², exactly.
-#[inline]
-pub(crate) const fn split_by_unit(t: i32, u: i32) -> (i32, u32) {
-    let (u_hi, u_lo) = (u >> FRAC, (u & 0xffff) as u32);
-    let (t_hi, t_lo) = (t >> FRAC, (t & 0xffff) as u32);
-    let high = t
-        .wrapping_mul(u_hi)
-        .wrapping_add(t_hi.wrapping_mul(u_lo as i32));
-    (high, t_lo * u_lo)
-}
-
-/// `t · u / 2¹⁶` rounded to nearest where a 64-bit product is a long sequence, from
-/// [`split_by_unit`]: `t·u_hi + t_hi·u_lo + ⌊(t_lo·u_lo + 2¹⁵)/2¹⁶⌋` (the low sum stays below
-/// 2³²). Exact whenever the result fits 32 bits: within `mul_unit`'s bounds (only the corner
-/// `t = −2³⁰`, `u = −2¹⁷` would reach 2³¹; no distance or unit vector comes near) and for
-/// `mul_fits`. Compiled everywhere, so the host tests check it.
-#[inline]
-const fn split_mul_unit(t: i32, u: i32) -> i32 {
-    let (high, low) = split_by_unit(t, u);
-    high.wrapping_add(((low + (1 << (FRAC - 1))) >> FRAC) as i32)
 }
 
 #[cfg(test)]

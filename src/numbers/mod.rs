@@ -7,6 +7,7 @@ pub(crate) mod bits;
 pub(crate) mod fx;
 pub(crate) mod isqrt;
 pub(crate) mod reciprocal;
+pub(crate) mod split;
 pub(crate) mod vec3;
 
 pub use fx::{FAR, Fx, LIMIT};

@@ -1,5 +1,8 @@
 //! [`Vec3`]: a point or direction in Q16.16.
 
+use crate::numbers::split::{
+    COARSE_MARGIN, coarse_dot, split_dot_parts, split_dot_unit, split_length_squared,
+};
 use core::ops::{Add, Neg, Sub};
 
 use crate::numbers::fx::{self, Fx};
@@ -444,75 +447,6 @@ const fn unit_part(c: Fx, y: u32, shift: u32) -> Fx {
     }
     Fx::from_bits(fx::mul_shift_round(c.to_bits(), y as i32, shift) as i32)
 }
-
-/// [`Vec3::length_squared_wide`] where a 64-bit product is a long sequence: with each
-/// component `c = h·2¹⁶ + l` (`h` signed, `l` in 0..2¹⁶), `Σ c² = 2³²·Σ h² + 2¹⁷·Σ h·l + Σ l²`,
-/// nine 16-bit products and the three sums gathered once, where three whole squares would each
-/// be assembled in 64 bits. `Σ h² ≤ 3·2³⁰` fits a `u32`. Compiled everywhere, so the host
-/// tests check it.
-#[inline]
-const fn split_length_squared(v: Vec3) -> u64 {
-    let (x, y, z) = (square_parts(v.x), square_parts(v.y), square_parts(v.z));
-    let high = x.0 + y.0 + z.0;
-    let middle = x.1 + y.1 + z.1;
-    let low = x.2 + y.2 + z.2;
-    // The sum is below 2⁶⁴, and the middle term may be negative: summed modulo 2⁶⁴, exactly.
-    ((high as u64) << 32)
-        .wrapping_add((middle << 17) as u64)
-        .wrapping_add(low)
-}
-
-/// `c = h·2¹⁶ + l`'s `h²`, `h·l` and `l²`, each exact in 32 bits (`|h| ≤ 2¹⁵`, `l < 2¹⁶`):
-/// [`split_length_squared`]'s terms.
-#[inline]
-const fn square_parts(c: Fx) -> (u32, i64, u64) {
-    let c = c.to_bits();
-    let (h, l) = (c >> 16, c & 0xFFFF);
-    ((h * h) as u32, (h * l) as i64, (l as u32 * l as u32) as u64)
-}
-
-/// [`Vec3::dot_exact`] of raw values where a 64-bit product is a long sequence: each product
-/// of a unit component in two parts ([`fx::split_by_unit`]), `Σ u·v + 2¹⁵ = 2¹⁶·Σ high +
-/// Σ low + 2¹⁵`, and only the low sum, below 2³⁴, needs 64 bits. The high parts are summed
-/// modulo 2³², exact since the rounded dot product fits 32 bits (`dot_exact`'s bounds).
-/// Compiled everywhere, so the host tests check it.
-#[inline]
-const fn split_dot_unit(u: Vec3, v: Vec3) -> i32 {
-    let (high, low) = split_dot_parts(u, v);
-    high.wrapping_add(((low + (1 << 15)) >> 16) as i32)
-}
-
-/// [`split_dot_unit`]'s two sums, `Σ u·v = 2¹⁶·high + low`: `low` exactly (below 3·2³²),
-/// `high` modulo 2³², so exactly wherever it fits 32 bits (for two unit vectors it is below
-/// 2¹⁸).
-#[inline]
-const fn split_dot_parts(u: Vec3, v: Vec3) -> (i32, u64) {
-    const fn parts(u: Fx, v: Fx) -> (i32, u64) {
-        let (high, low) = fx::split_by_unit(v.to_bits(), u.to_bits());
-        (high, low as u64)
-    }
-    let (x, y, z) = (parts(u.x, v.x), parts(u.y, v.y), parts(u.z, v.z));
-    (x.0.wrapping_add(y.0).wrapping_add(z.0), x.1 + y.1 + z.1)
-}
-
-/// `S = Σ a·a'` for two vectors whose components lie within ±2¹⁷ raw, each component
-/// `c = 2⁸·a + α` cut to its top bits `a = c >> 8` (in −2⁹..=2⁹) and `α` in 0..2⁸: three
-/// 32-bit products. The exact dot product is `2¹⁶·S + R`, where each component adds to `R`
-/// `2⁸·(a·α' + α·a') + α·α'`, in −66 846 720..=66 911 745 (`|a·α' + α·a'| ≤ 2·2⁹·255`), so
-/// `|R| < 200 735 236 < 3063·2¹⁶`: for `|S| >` [`COARSE_MARGIN`] the dot product has the sign
-/// of `S`. For unit vectors that leaves undecided only pairs within about 0.047 of
-/// perpendicular. Compiled everywhere, so the host tests check it.
-#[inline]
-const fn coarse_dot(u: Vec3, v: Vec3) -> i32 {
-    const fn top(c: Fx) -> i32 {
-        c.to_bits() >> 8
-    }
-    top(u.x) * top(v.x) + top(u.y) * top(v.y) + top(u.z) * top(v.z)
-}
-
-/// What [`coarse_dot`]'s sum must pass for its sign to be the exact dot product's: at least
-/// 3 062, taken as 3·2¹⁰.
-const COARSE_MARGIN: u32 = 3 << 10;
 
 /// The exact product of two raw values, as [`fx::wide_mul`]; where a 64-bit product is a
 /// long sequence ([`fx::NO_LONG_MULTIPLY`]), a zero first factor skips it. Floors and walls
