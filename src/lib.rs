@@ -65,12 +65,13 @@
 //!   refract ([`Refraction`]).
 //! - `render/`: the [`Camera`] makes a ray through each pixel centre; `trace.rs` is the
 //!   chapter's shoot and shade, read top to bottom ([`Scene::trace`] = `shade(shoot(ray))`,
-//!   mirror and refracted rays followed as a tree from a bounded list, without recursion);
-//!   [`render_row`], [`render`], [`render_row_supersampled`], [`shoot_row`] and
-//!   [`shoot_row_skipping`] walk rows and frames into a [`Framebuffer`] or a row buffer
-//!   ([`FrameHash`] digests them); `accel/` holds every speed-up of that walk ([`RowRays`],
-//!   row culling, runs of columns; and the shadow cones and shadow sets the scene keeps), each bit-identical to tracing the row's
-//!   pixels one by one.
+//!   brute-force loops over every object and light, mirror and refracted rays followed as a
+//!   tree from a bounded list, without recursion): the plain path, and the oracle.
+//!   [`render_row`], [`render`], [`render_row_supersampled`] and [`shoot_row`] walk rows and
+//!   frames into a [`Framebuffer`] or a row buffer ([`FrameHash`] digests them); `accel/`
+//!   holds every speed-up of that walk ([`RowRays`], row culling, runs of columns, matte runs,
+//!   the shadow sets and cones, the first surface's shading), each bit for bit the plain
+//!   path's.
 //!   `changes.rs` bounds the pixels an edit of the scene can change ([`Damage`]) and
 //!   redraws only those ([`render_changes`], [`render_row_span`]), for animations.
 //! - [`draw`]: onto any `embedded-graphics` display at a point, clipped to it: a
@@ -95,6 +96,8 @@ mod error;
 mod framebuffer;
 mod geometry;
 mod hash;
+#[cfg(feature = "internals")]
+pub mod internals;
 mod numbers;
 mod render;
 mod scene;
@@ -102,6 +105,9 @@ mod scene;
 mod xorshift;
 
 pub use draw::{DrawError, FromRgb, Picture, Viewport};
+/// A position on a display, column `x` and row `y`: embedded-graphics' own, where a
+/// [`Viewport`] is drawn.
+pub use embedded_graphics::geometry::Point;
 /// The size type of the camera builders and [`Camera::size`]: embedded-graphics' own, width
 /// by height, so a display's size can be passed as it is.
 pub use embedded_graphics::geometry::Size;
@@ -110,16 +116,9 @@ pub use framebuffer::Framebuffer;
 pub use geometry::{Hit, Plane, Ray, Shape, Sphere};
 pub use hash::FrameHash;
 pub use numbers::{FAR, Fx, LIMIT, Vec3};
-// Not stable API: the integer square root the geometry uses, for tests; hidden from the docs.
-#[doc(hidden)]
-pub use numbers::isqrt;
-// Not stable API: Snell's law as the renderer applies it, for the per-ray property tests.
-#[doc(hidden)]
-pub use geometry::refract::refract;
 pub use render::{
     Camera, Damage, LookAt, MAX_PIXELS, MAX_RECTANGLES, Orbit, Pinhole, RowRays, render,
     render_changes, render_row, render_row_span, render_row_supersampled, shoot_row,
-    shoot_row_skipping,
 };
 pub use scene::{Background, Checker, Light, Material, Object, Refraction, Rgb, Scene, SceneHit};
 

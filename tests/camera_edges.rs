@@ -5,9 +5,10 @@
 //! The judge of a ray is an f64 model of the same screen built here from the constructor's
 //! own inputs (not from fixray's rounded camera): where a ray lands on that screen, in pixels.
 
+use fixray::internals::shoot_row_skipping;
 use fixray::{
     Camera, Error, Fx, LIMIT, Quantity, Ray, Rgb, Size, demo, render_row, render_row_supersampled,
-    shoot_row, shoot_row_skipping,
+    shoot_row,
 };
 use fixray_reference::ToF64;
 use fixray_reference::{DRay, DScene, DVec3};

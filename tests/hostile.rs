@@ -733,7 +733,7 @@ fn numbers_saturate_instead_of_wrapping() {
             let dot_exact = raw(a.x) * raw(b.x) + raw(a.y) * raw(b.y) + raw(a.z) * raw(b.z);
 
             // [ASSERT: dot_wide is exact where it fits, saturated where not]
-            let wide = a.dot_wide(b);
+            let wide = fixray::internals::dot_wide(a, b);
             let clamped = dot_exact.clamp(i64::MIN as i128, i64::MAX as i128);
             assert_eq!(wide as i128, clamped, "dot_wide of {a:?}, {b:?}");
             // [ASSERT: dot is the exact product rounded once, saturating]
@@ -759,8 +759,12 @@ fn numbers_saturate_instead_of_wrapping() {
             }
             // [ASSERT: lengths exact]
             let square = (raw(a.x) * raw(a.x) + raw(a.y) * raw(a.y) + raw(a.z) * raw(a.z)) as u128;
-            assert_eq!(a.length_squared_wide() as u128, square, "{a:?}");
-            let root = fixray::isqrt(a.length_squared_wide()) as u128;
+            assert_eq!(
+                fixray::internals::length_squared_wide(a) as u128,
+                square,
+                "{a:?}"
+            );
+            let root = fixray::internals::isqrt(fixray::internals::length_squared_wide(a)) as u128;
             assert!(
                 root * root <= square && (root + 1) * (root + 1) > square,
                 "isqrt"
@@ -805,7 +809,7 @@ fn numbers_saturate_instead_of_wrapping() {
                 }
             );
             let n = src.bits() >> src.below(64);
-            let r = fixray::isqrt(n) as u128;
+            let r = fixray::internals::isqrt(n) as u128;
             assert!(
                 r * r <= n as u128 && (r + 1) * (r + 1) > n as u128,
                 "isqrt({n})"

@@ -31,9 +31,9 @@
 //!   the normal's error (the bound over r) of grazing, or with |k| within 10⁻³ plus what that
 //!   error moves k by.
 
+use fixray::internals::refract;
 use fixray::{
     Background, FAR, Fx, Light, Material, Object, Plane, Ray, Rgb, Scene, Shape, Sphere, Vec3,
-    refract,
 };
 use fixray_reference::{DPlane, DRay, DSphere, DVec3};
 use proptest::prelude::*;

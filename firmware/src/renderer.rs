@@ -192,7 +192,7 @@ impl Renderer for FixedRays {
         let too_many = Error::CapacityExceeded { capacity: SKIPS };
         for (row, runs) in (0..rows).zip(skips.iter_mut()) {
             let mut count = 0;
-            fixray::shoot_row_skipping(
+            fixray::internals::shoot_row_skipping(
                 &scene,
                 &camera,
                 row,
@@ -267,7 +267,7 @@ impl Renderer for FixedShoot {
         let (scene, camera) = (&self.scene, &self.camera);
         let mut empty = [(0u32, 0u32); SKIPS];
         let mut count = 0;
-        fixray::shoot_row_skipping(
+        fixray::internals::shoot_row_skipping(
             scene,
             camera,
             row,

@@ -54,9 +54,8 @@ impl Ray {
     /// A ray from a hit point, as the renderer's shadow and mirror rays leave one: the origin
     /// may lie anywhere a first hit can (within ±(`LIMIT` + `FAR`)), the direction is
     /// normalised here. For tests that repeat the renderer's secondary rays by brute force.
-    // Not stable API: hidden from the docs.
-    #[doc(hidden)]
-    pub const fn from_hit_point(origin: Vec3, dir: Vec3) -> Result<Self, Error> {
+    #[cfg(feature = "internals")]
+    pub(crate) const fn from_hit_point(origin: Vec3, dir: Vec3) -> Result<Self, Error> {
         let bound = crate::numbers::fx::HIT_REACH;
         if !origin.within_raw(bound) {
             return Err(Error::OutOfRange {

@@ -16,14 +16,13 @@ use crate::numbers::vec3::Vec3;
 /// a unit vector for exact inputs, renormalised here against rounding.
 ///
 /// ```
-/// use fixray::{Fx, Vec3, refract};
+/// use fixray::{Fx, Vec3, internals::refract};
 /// // Straight through at normal incidence, for any ratio.
 /// assert_eq!(refract(-Vec3::Z, Vec3::Z, Fx::from_num(0.5)), Some(-Vec3::Z));
 /// // From glass into air at 45°: sin θ₂ = 1.5 · 0.707 > 1, totally reflected.
 /// let d = Vec3::new(Fx::from_num(0.7071), Fx::ZERO, Fx::from_num(-0.7071));
 /// assert_eq!(refract(d, Vec3::Z, Fx::from_num(1.5)), None);
 /// ```
-#[doc(hidden)]
 #[must_use]
 pub fn refract(dir: Vec3, normal: Vec3, ratio: Fx) -> Option<Vec3> {
     // cos θ₁ in [0, 1]; rounding may leave it a step outside.

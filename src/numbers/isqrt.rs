@@ -15,10 +15,10 @@ use crate::numbers::reciprocal::{rsqrt, rsqrt_unit_and_mantissa};
 /// with core's `u64::isqrt` is measured in docs/PERFORMANCE.md.
 ///
 /// ```
-/// assert_eq!(fixray::isqrt(0), 0);
-/// assert_eq!(fixray::isqrt(15), 3);
-/// assert_eq!(fixray::isqrt(16), 4);
-/// assert_eq!(fixray::isqrt(u64::MAX), u32::MAX as u64);
+/// assert_eq!(fixray::internals::isqrt(0), 0);
+/// assert_eq!(fixray::internals::isqrt(15), 3);
+/// assert_eq!(fixray::internals::isqrt(16), 4);
+/// assert_eq!(fixray::internals::isqrt(u64::MAX), u32::MAX as u64);
 /// ```
 #[must_use]
 pub const fn isqrt(x: u64) -> u64 {

@@ -11,5 +11,4 @@ pub(crate) mod split;
 pub(crate) mod vec3;
 
 pub use fx::{FAR, Fx, LIMIT};
-pub use isqrt::isqrt;
 pub use vec3::Vec3;

@@ -101,11 +101,9 @@ impl Vec3 {
     /// The dot product as a Q32.32 raw value (`i64`, 2⁻³² units): exact wherever it fits,
     /// which it always does in the render path (each product is below 2⁶² in magnitude).
     /// Beyond that it saturates rather than wrap.
-    // Not stable API: for fixray's profiling firmware and tests, hidden from the docs.
-    #[doc(hidden)]
     #[inline]
     #[must_use]
-    pub const fn dot_wide(self, o: Vec3) -> i64 {
+    pub(crate) const fn dot_wide(self, o: Vec3) -> i64 {
         let wrapped = self.dot_wide_wrapping(o);
         // Three products of at most 2⁶² each sum to at most 3 · 2⁶² in magnitude, so a sum
         // that wrapped lies at least 2⁶² from zero: one that lies within 2⁶¹ is exact. Any
@@ -302,11 +300,9 @@ impl Vec3 {
 
     /// ‖self‖² as an exact unsigned Q32.32 raw value: three squares below 2⁶² each, so it
     /// never overflows.
-    // Not stable API: for fixray's profiling firmware and tests, hidden from the docs.
-    #[doc(hidden)]
     #[inline]
     #[must_use]
-    pub const fn length_squared_wide(self) -> u64 {
+    pub(crate) const fn length_squared_wide(self) -> u64 {
         if fx::NO_LONG_MULTIPLY {
             return split_length_squared(self);
         }

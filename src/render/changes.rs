@@ -28,8 +28,8 @@
 //!   it is bounded (which stands in alone where the shadow cannot be bounded).
 //! - **Several changed spheres**: the union of what each gives.
 //!
-//! Silhouettes are the renderer's own culling, the rows of
-//! [`Scene::seen_from_row`](crate::Scene::seen_from_row) and the columns of the camera's
+//! Silhouettes are the renderer's own culling, the spheres each row's plane can meet
+//! (`Scene::seen_from_row_plane`) and the columns of the camera's
 //! screen span of a sphere: a pixel outside them never tries the sphere in
 //! [`render_row`](crate::render_row). Shadows are bounded in `f32` once a frame, from
 //! differences taken exactly in Q16.16: the sphere is widened by more than the rounding of a

@@ -17,4 +17,6 @@ pub(crate) mod trace;
 pub use accel::row_rays::RowRays;
 pub use camera::{Camera, LookAt, MAX_PIXELS, Orbit, Pinhole};
 pub use changes::{Damage, MAX_RECTANGLES, render_changes, render_row_span};
-pub use rows::{render, render_row, render_row_supersampled, shoot_row, shoot_row_skipping};
+#[cfg(feature = "internals")]
+pub use rows::shoot_row_skipping;
+pub use rows::{render, render_row, render_row_supersampled, shoot_row};

@@ -128,7 +128,7 @@ pub(crate) fn render_columns<const N: usize, const L: usize>(
 ///
 /// A row of rays lies in one plane through the eye, and each sphere covers a span of columns,
 /// so the row is first culled: only the spheres whose span holds a pixel are tried for it
-/// ([`Scene::seen_from_row`] and [`Camera`]'s conservative screen span of a sphere). The hits
+/// (the spheres the row's plane can meet and [`Camera`]'s conservative screen span of a sphere). The hits
 /// are exactly those of [`Scene::shoot`]. A row outside the screen is
 /// [`Error::RowOutOfRange`], and nothing is shot.
 ///
@@ -177,15 +177,14 @@ pub fn shoot_row<const N: usize, const L: usize>(
 /// screen is [`Error::RowOutOfRange`], and nothing is handed over.
 ///
 /// ```
-/// use fixray::{demo, shoot_row_skipping};
+/// use fixray::{demo, internals::shoot_row_skipping};
 /// let (scene, camera) = (demo::scene(), demo::camera(40, 32).unwrap());
 /// let (mut skipped, mut shot) = (0, 0);
 /// shoot_row_skipping(&scene, &camera, 0, |run| skipped += run.len(), |_, _, _| shot += 1)?;
 /// assert_eq!((skipped, shot), (40, 0)); // the top row sees only sky
 /// # Ok::<(), fixray::Error>(())
 /// ```
-// Not stable API: for fixray's profiling firmware and tests, hidden from the docs.
-#[doc(hidden)]
+#[cfg(feature = "internals")]
 pub fn shoot_row_skipping<const N: usize, const L: usize>(
     scene: &Scene<N, L>,
     camera: &Camera,

@@ -90,9 +90,9 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// background for a miss, otherwise the lit surface plus what its mirror and its
     /// refraction show (see [`Material`](crate::Material)).
     ///
-    /// A surface that shows its own diffuse light alone ([`Material::is_plain_matte`]) is the
-    /// pixel by itself: its channels are formed from its brightness in one product each
-    /// ([`Scene::matte_pixel`]). Any other sums its light and its rays' first.
+    /// A surface that shows its own diffuse light alone (no highlight, mirror or refraction)
+    /// is the pixel by itself: its channels are formed from its brightness in one product
+    /// each (`Scene::matte_pixel`). Any other sums its light and its rays' first.
     ///
     /// A hit on a mirror or a transparent surface starts a tree of secondary rays: each hit
     /// may send on a mirror ray and a refracted ray, each weighted by the product of the

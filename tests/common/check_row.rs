@@ -3,7 +3,7 @@
 
 use std::collections::HashMap;
 
-use fixray::{Camera, Fx, Light, Ray, Rgb, Scene, SceneHit};
+use fixray::{Camera, Fx, Light, Rgb, Scene, SceneHit};
 
 use super::{UNIT_TOLERANCE, World, check_hit, check_surface_through_origin, length};
 
@@ -33,7 +33,7 @@ pub fn check_row<const N: usize>(scene: &Scene<N>, camera: &Camera, row: u32) ->
     });
     let mut skipped = Vec::new();
     let mut seen = Vec::new();
-    let skipped_row = fixray::shoot_row_skipping(
+    let skipped_row = fixray::internals::shoot_row_skipping(
         scene,
         camera,
         row,
@@ -220,10 +220,10 @@ pub fn check_shadows<const N: usize>(world: &World, camera: &Camera, row: u32) {
 /// Whether anything but the object `hit` is on lies between it and `light`, by brute force.
 pub fn occluded<const N: usize>(scene: &Scene<N>, hit: &SceneHit, light: &Light) -> bool {
     let to_light = light.position() - hit.hit().point();
-    let distance_squared = to_light.length_squared_wide();
+    let distance_squared = fixray::internals::length_squared_wide(to_light);
     // The shadow ray's direction is `to_light` normalised, as the renderer's is; its origin is
     // a hit point, which may lie past ±LIMIT (up to LIMIT + FAR).
-    let Ok(shadow) = Ray::from_hit_point(hit.hit().point(), to_light) else {
+    let Ok(shadow) = fixray::internals::ray_from_hit_point(hit.hit().point(), to_light) else {
         return false; // a light at the hit point: it lights nothing there either way
     };
     scene.objects().iter().enumerate().any(|(i, object)| {

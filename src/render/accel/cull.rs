@@ -31,8 +31,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// let ray = camera.ray(80, 0);
     /// assert_eq!(scene.shoot_among(&ray, among), scene.shoot(&ray));
     /// ```
-    // Not stable API: for fixray's profiling firmware and tests, hidden from the docs.
-    #[doc(hidden)]
+    #[cfg(feature = "internals")]
     #[must_use]
     pub fn seen_from_row(&self, camera: &crate::Camera, row: u16) -> u64 {
         self.seen_from_row_plane(camera.eye(), camera.row_plane_normal(row))
@@ -58,8 +57,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// The nearest hit among the objects whose bit is set in `among` (bit `i` for object `i`;
     /// objects past the 64th are always tried). Distances first, and a sphere's hit point and
     /// normal only for the nearest (a plane's hit comes with its distance, and is kept).
-    // Not stable API: for fixray's profiling firmware and tests, hidden from the docs.
-    #[doc(hidden)]
+    #[cfg(feature = "internals")]
     #[must_use]
     pub fn shoot_among(&self, ray: &Ray, among: u64) -> Option<SceneHit> {
         self.nearest_among(ray, [among, 0], 0, |_, shape, _| shape.meet(ray))
