@@ -258,6 +258,35 @@ fn unit(v: Vec3) -> Option<Vec3> {
     v.try_normalize()
 }
 
+/// The unit vector along the exact integer vector `v` (any scale; components within ±2⁶²),
+/// or `None` for the zero vector: each component within 0.55 of a unit of 2⁻¹⁶ of exact, and
+/// a further 2⁻³⁰ at most.
+///
+/// `v` is first brought to a largest component of 2²⁹ to 2³⁰ in magnitude, so that it fits
+/// Q16.16 with room for the normalisation's squares: by a left shift if smaller (exact), or a
+/// right shift rounded to nearest if larger (each component then moves by at most half a
+/// unit, the whole by at most √3/2 units of a length of at least 2²⁹: a direction within
+/// 2⁻²⁹ of `v`'s). [`Vec3::try_normalize`] then does the rest, to 0.55 of a unit of 2⁻¹⁶.
+fn unit_of_exact(v: [i64; 3]) -> Option<Vec3> {
+    let largest = v.iter().map(|c| c.unsigned_abs()).max().unwrap_or(0);
+    if largest == 0 {
+        return None;
+    }
+    // The bit length of `largest` brought to 30: 2²⁹ ≤ largest < 2³⁰ once shifted.
+    let length = 64 - largest.leading_zeros() as i32;
+    let scaled = |c: i64| {
+        let bits = if length <= 30 {
+            c << (30 - length)
+        } else {
+            let down = (length - 30) as u32;
+            (c + (1 << (down - 1))) >> down
+        };
+        // At most 2³⁰ in magnitude (a rounded-up top component), so it fits.
+        Fx::from_bits(bits as i32)
+    };
+    Vec3::new(scaled(v[0]), scaled(v[1]), scaled(v[2])).try_normalize()
+}
+
 impl Camera {
     /// The camera at `eye` looking along the unit vector `dir` at a screen `view` pixels
     /// away, with one pixel's steps `right` and `down` (`aspect` being the length of `down`,
@@ -605,10 +634,37 @@ impl Camera {
     /// The unit normal of the plane through the eye that holds every ray of display row
     /// `row` (the rays of a row differ only along `right`), or `None` if it is degenerate.
     /// Any `u16` row: off the screen, its direction towards column 0 is scaled to fit.
+    ///
+    /// Each component is within 0.55 of a unit of 2⁻¹⁶ of the exact unit normal of the plane
+    /// the row's rays lie in, however short their directions: the culling of
+    /// [`Scene::seen_from_row`](crate::Scene::seen_from_row), its row balls, the shadow sets
+    /// of a row and the damage of an edit take their margins from that.
+    ///
+    /// The unnormalised direction towards column `x` is exactly `w + x·right`, `w` the one
+    /// towards column 0 (each column adds `2·right` to a numerator halved with rounding), so
+    /// every ray of the row lies in the plane through the eye along `right` and `w`, whose
+    /// normal is `right × w`. That product is formed exactly here, in raw units of 2⁻³²: a
+    /// component of `right` (a unit vector) is at most 2¹⁶ + 1 raw, one of `w` at most 2³⁰ + 1
+    /// (the ray budget on the screen, [`Camera::shift_to_fit`] off it), so each product of two
+    /// is below 2⁴⁷ and each difference below 2⁴⁸: no overflow. [`unit_of_exact`] then
+    /// scales it to a top component of 2²⁹ to 2³⁰ (exact, or rounded to within 2⁻³⁰ of its
+    /// length) and normalises it, the one rounding that matters.
+    ///
+    /// Rounding `right × w` to Q16.16 first, as this once did, is not enough: the ray budget
+    /// lets the view distance fall to `R²/16 384` pixels, a `w` of about ten raw units on a
+    /// one-pixel screen at 179.96°, and a cross product rounded to 2⁻¹⁶ then points
+    /// hundredths of a radian off, far past the culling's margin of 2⁻¹¹ of a distance.
     pub(crate) fn row_plane_normal(&self, row: u16) -> Option<Vec3> {
-        self.right
-            .cross_once(self.towards(0, row.into()))
-            .try_normalize()
+        let (r, w) = (self.right, self.towards(0, row.into()));
+        let c = |p: Fx, q: Fx, s: Fx, t: Fx| {
+            fx::wide_mul_once(p.to_bits(), q.to_bits())
+                - fx::wide_mul_once(s.to_bits(), t.to_bits())
+        };
+        unit_of_exact([
+            c(r.y, w.z, r.z, w.y),
+            c(r.z, w.x, r.x, w.z),
+            c(r.x, w.y, r.y, w.x),
+        ])
     }
 
     /// The columns whose rays can meet a sphere of `radius` at `centre`, as a conservative
