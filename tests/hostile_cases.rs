@@ -299,3 +299,59 @@ fn damage_holds_every_changed_pixel_on_tiny_screens_at_the_widest_views() {
         assert!(u64::from(count) * 4 > cases(), "{changed:?}");
     }
 }
+#[test]
+fn orbit_refuses_a_distance_that_is_not_positive() {
+    let size = Size::new(160, 128);
+    let orbit = |distance: f32| {
+        Camera::orbit([0.0, 0.0, -16.0], distance)
+            .size(size)
+            .build()
+    };
+    for distance in [-16.0, -1.0, -1e-3, -0.0, 0.0, 1e-7] {
+        match orbit(distance) {
+            Err(Error::OutOfRange { quantity, min, .. }) => {
+                assert_eq!(quantity, Quantity::OrbitDistance, "{distance}");
+                assert_eq!(min, Fx::DELTA, "{distance}");
+            }
+            other => panic!("orbit distance {distance}: {other:?}"),
+        }
+    }
+    assert_eq!(
+        orbit(f32::NAN),
+        Err(Error::NotFinite {
+            quantity: Quantity::OrbitDistance
+        })
+    );
+    // The longest distance two points of the overflow-safe cube can be apart is taken (the
+    // eye then in the cube's far corner); past it, the distance itself is refused.
+    let reach = 2048.0 * 3f32.sqrt();
+    let corner = Camera::orbit([-1024.0, -1024.0, -1024.0], reach * 0.999_99)
+        .yaw_degrees(45.0)
+        .pitch_degrees(35.264_39)
+        .size(size)
+        .build();
+    assert!(
+        !matches!(
+            corner,
+            Err(Error::OutOfRange {
+                quantity: Quantity::OrbitDistance,
+                ..
+            })
+        ),
+        "{corner:?}"
+    );
+    assert!(matches!(
+        orbit(reach * 1.000_01),
+        Err(Error::OutOfRange {
+            quantity: Quantity::OrbitDistance,
+            ..
+        })
+    ));
+    let refused = orbit(-16.0).unwrap_err().to_string();
+    assert!(refused.contains("orbit distance"), "{refused}");
+    // A positive distance still orbits: the eye 16 units from the target.
+    let camera = orbit(16.0).unwrap();
+    let eye = f64s(camera.eye());
+    let distance = (eye[0].powi(2) + eye[1].powi(2) + (eye[2] + 16.0).powi(2)).sqrt();
+    assert!((distance - 16.0).abs() < 0.05, "{distance}");
+}

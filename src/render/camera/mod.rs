@@ -35,6 +35,12 @@ pub const MAX_PIXELS: u32 = 4096;
 /// 2⁻¹⁵ · B = ½. Narrow fields of view meet the budget at `F ≈ B`, wide ones at `F ≈ R²/B`.
 const RAY_BUDGET_PX: u32 = 16_384;
 
+/// The longest distance [`Camera::orbit`] takes: between two points within ±[`LIMIT`] (the
+/// eye and the target), at most `2·1024·√3` = 3547.24005…, rounded down to Q16.16.
+///
+/// [`LIMIT`]: crate::LIMIT
+const ORBIT_REACH: Fx = Fx::from_bits(232_471_924);
+
 /// A camera: a viewpoint and a screen of `width × height` pixels in front of it, made by a
 /// builder: [`Camera::look_at`], [`Camera::orbit`] or the chapter's [`Camera::pinhole`].
 ///
@@ -413,6 +419,9 @@ impl Camera {
                 return Err(Error::NotFinite { quantity });
             }
         }
+        // A distance that is not positive would put the eye on the far side of the target, or
+        // on it; one past the longest distance within the overflow-safe cube, outside it.
+        check::f32_within(distance, Fx::DELTA, ORBIT_REACH, Quantity::OrbitDistance)?;
         if !(pitch_degrees > -90.0 && pitch_degrees < 90.0) {
             return Err(Error::DegenerateCamera(CameraProblem::OrbitPitch));
         }
