@@ -715,3 +715,76 @@ fn render_row_equals_trace_at_the_field_of_view_limits() {
         }
     }
 }
+
+/// `v` rounded to Q16.16 (and exactly an `f32` within ±256): inputs that the camera takes as
+/// they are, so that the f64 screen built from them is the one fixray is asked for.
+fn on_grid(v: V) -> [f32; 3] {
+    v.map(|c| ((c * 65536.0).round() / 65536.0) as f32)
+}
+
+/// An up vector `angle` degrees off the view from `eye` to `target`, turned towards `towards`
+/// (any vector not along the view), on the Q16.16 grid, and its angle to the view as rounded.
+fn up_off_the_view(eye: [f32; 3], target: [f32; 3], towards: V, angle: f64) -> ([f32; 3], f64) {
+    let f = unit(sub(f64s(target), f64s(eye)));
+    let side = unit(cross(f, towards));
+    let across = cross(side, f);
+    let (s, c) = angle.to_radians().sin_cos();
+    let up = on_grid(std::array::from_fn(|i| f[i] * c + across[i] * s));
+    let sine = dot(cross(f, unit(f64s(up))), cross(f, unit(f64s(up)))).sqrt();
+    (up, sine.asin().to_degrees())
+}
+
+/// The README's half pixel holds however close to the view `up` is, where the camera
+/// accepts it: `up` a quarter of a degree off a generic view once moved the corners of a
+/// 4096 × 4096 screen by more than ten pixels (`right = unit(forward × up)` rounded by about
+/// 2⁻¹⁶/sin θ). Where it is refused, it is as parallel to the view.
+#[test]
+fn look_at_rays_stay_within_half_a_pixel_with_up_near_the_view() {
+    let views: [([f32; 3], [f32; 3], V); 4] = [
+        ([1.25, 2.5, 3.0], [-4.0, 0.5, -9.0], [0.3, 1.0, 0.1]),
+        ([0.0; 3], [5.0, 3.0, -1.0], [0.0, 0.0, 1.0]),
+        ([-7.5, 0.75, 12.0], [3.0, -2.25, -30.5], [1.0, -0.2, 0.4]),
+        ([100.0, -50.0, 25.0], [99.0, -48.0, 27.5], [-0.7, 0.1, 0.9]),
+    ];
+    let angles = [0.2, 0.22, 0.23, 0.25, 0.3, 0.5, 1.0, 2.0, 10.0, 90.0];
+    let sizes = [(320, 240), (1920, 1080), (4096, 4096)];
+    let (mut accepted, mut worst_seen) = (0, 0.0f64);
+    for (eye, target, towards) in views {
+        for angle in angles {
+            let (up, angle) = up_off_the_view(eye, target, towards, angle);
+            for (cols, rows) in sizes {
+                for fov in [60.0, 20.0, 150.0] {
+                    let built = Camera::look_at(eye, target)
+                        .up(up)
+                        .fov_degrees(fov)
+                        .size(Size::new(cols, rows))
+                        .build();
+                    let camera = match built {
+                        Ok(camera) => camera,
+                        Err(Error::DegenerateCamera(fixray::CameraProblem::UpAlongView)) => {
+                            assert!(angle < 0.25, "{angle}° refused as along the view");
+                            continue;
+                        }
+                        Err(
+                            Error::FieldOfViewTooNarrow { .. } | Error::FieldOfViewTooWide { .. },
+                        ) => {
+                            continue;
+                        }
+                        Err(e) => panic!("{e:?}"),
+                    };
+                    accepted += 1;
+                    let exact = Exact::look_at(eye, target, up, fov, cols, rows);
+                    let worst = largest_shift(&camera, &exact, (cols / 16).max(1));
+                    worst_seen = worst_seen.max(worst);
+                    assert!(
+                        worst <= 0.5,
+                        "up {angle:.4}° off the view from {eye:?} to {target:?}, {fov}° at \
+                         {cols}x{rows}: a ray {worst:.3} px off"
+                    );
+                }
+            }
+        }
+    }
+    eprintln!("{accepted} cameras, worst ray {worst_seen:.3} px off");
+    assert!(accepted > 200, "{accepted}");
+}
