@@ -788,3 +788,89 @@ fn look_at_rays_stay_within_half_a_pixel_with_up_near_the_view() {
     eprintln!("{accepted} cameras, worst ray {worst_seen:.3} px off");
     assert!(accepted > 200, "{accepted}");
 }
+
+/// The limits a look-at camera names are fields of view it accepts, and the widest (or
+/// narrowest) such in thousandths of a degree: on many screens, square and not, tiny and
+/// large, each limit is accepted and a thousandth of a degree past it refused. (The limit was
+/// once named from the budget's continuous equation, while the check takes the view distance
+/// as rounded: 1 × 1 named 179.993° and refused it.)
+#[test]
+fn the_field_of_view_limits_named_are_accepted_on_every_screen() {
+    // Along an axis (the basis exact) and not (a row step a unit of 2⁻¹⁶ off one pixel).
+    for target in [[0.0, 0.0, -1.0], [5.0, 3.0, -1.0]] {
+        limits_named_are_accepted(target);
+    }
+}
+
+fn limits_named_are_accepted(target: [f32; 3]) {
+    let camera = |fov: f32, cols, rows| {
+        Camera::look_at([0.0; 3], target)
+            .fov_degrees(fov)
+            .size(Size::new(cols, rows))
+            .build()
+    };
+    let mut sizes = vec![
+        (1, 1),
+        (2, 1),
+        (1, 2),
+        (3, 3),
+        (8, 8),
+        (7, 5),
+        (160, 128),
+        (320, 240),
+        (1920, 1080),
+        (4096, 4096),
+        (4096, 1),
+        (1, 4096),
+    ];
+    let mut state = 0x9e37_79b9_u32;
+    for _ in 0..120 {
+        let mut next = |n: u32| {
+            state ^= state << 13;
+            state ^= state >> 17;
+            state ^= state << 5;
+            1 + state % n
+        };
+        let n = if sizes.len() % 2 == 0 { 64 } else { 4096 };
+        sizes.push((next(n), next(n)));
+    }
+    let mut wrong = Vec::new();
+    for (cols, rows) in sizes {
+        match camera(179.9999, cols, rows) {
+            Err(Error::FieldOfViewTooWide { max_millidegrees }) => {
+                let widest = max_millidegrees as f32 / 1000.0;
+                let past = (max_millidegrees + 1) as f32 / 1000.0;
+                if camera(widest, cols, rows).is_err() || camera(past, cols, rows).is_ok() {
+                    wrong.push(format!(
+                        "{cols}x{rows}: widest named {max_millidegrees} m°, which is {:?}; \
+                         one more is {:?}",
+                        camera(widest, cols, rows).err(),
+                        camera(past, cols, rows).err()
+                    ));
+                }
+            }
+            other => panic!("{cols}x{rows} at 179.9999°: {other:?}"),
+        }
+        match camera(0.0001, cols, rows) {
+            Err(Error::FieldOfViewTooNarrow { min_millidegrees }) => {
+                let narrowest = min_millidegrees as f32 / 1000.0;
+                let before = (min_millidegrees - 1) as f32 / 1000.0;
+                if camera(narrowest, cols, rows).is_err() || camera(before, cols, rows).is_ok() {
+                    wrong.push(format!(
+                        "{cols}x{rows}: narrowest named {min_millidegrees} m°, which is {:?}; \
+                         one less is {:?}",
+                        camera(narrowest, cols, rows).err(),
+                        camera(before, cols, rows).err()
+                    ));
+                }
+            }
+            other => panic!("{cols}x{rows} at 0.0001°: {other:?}"),
+        }
+    }
+    assert!(
+        wrong.is_empty(),
+        "{} limits:\n{}",
+        wrong.len(),
+        wrong.join("\n")
+    );
+}

@@ -256,6 +256,73 @@ fn doubled_angle(atan_x: u64, atan_y: u64) -> u64 {
     angle.max(0) as u64
 }
 
+/// The view distance in pixels of a look-at camera of `rows` rows whose vertical field of
+/// view is `fov_y_degrees` (strictly between 0 and 180), as its builder rounds it: the screen
+/// is `2·tan(fov/2)` high one unit from the eye.
+fn view_of_fov(fov_y_degrees: f32, rows: u16) -> Fx {
+    let half_angle = fov_y_degrees.to_radians() / 2.0;
+    let screen_h = 2.0 * libm::tanf(half_angle);
+    let pitch = screen_h / rows as f32;
+    view_distance(1.0 / pitch)
+}
+
+/// A look-at camera's refusal `error` with the limit it names made the one that camera
+/// accepts: the widest (or narrowest) field of view in whole thousandths of a degree whose
+/// view distance, as [`view_of_fov`] rounds it, passes [`check_budget`] for a screen of
+/// `cols × rows` pixels whose row step is `aspect` long. Other errors are left as they are.
+///
+/// [`check_budget`] names its limit from the budget's continuous equation, to within 10⁻⁵
+/// millidegrees; but the view distance it checks is rounded to Q16.16, which on the widest
+/// views of small screens (a view distance of a few units of 2⁻¹⁶ pixels) moves the field of
+/// view it stands for by up to about 3.5 millidegrees (one unit of 2⁻¹⁶ at a view distance
+/// of `F` pixels turns the edge of a screen `h` rows high by `2⁻¹⁶ · h / (F² + h²/4)`
+/// radians, at most `4 · 2⁻¹⁶` for one row). So the named value is a start: from it, a
+/// thousandth at a time, inwards until the camera accepts it, then outwards while it still
+/// does. Acceptance changes once along each way (the view distance falls as the field of view
+/// widens, and `F² + R² ≤ B·F` holds between two roots), so that is the widest accepted;
+/// a few steps in all, each one tangent, on a path only a refused camera takes. Each way
+/// takes at most 64 steps (no screen comes near); should none inwards be accepted, the named
+/// value is left.
+// Out of line, as `doubled_angle` is: only a refused camera comes here.
+#[inline(never)]
+fn accepted_limit(error: Error, aspect: Fx, cols: u16, rows: u16) -> Error {
+    let accepts = |millidegrees: u32| {
+        let fov = millidegrees as f32 / 1000.0;
+        fov > 0.0 && fov < 180.0 && check_budget(view_of_fov(fov, rows), aspect, cols, rows).is_ok()
+    };
+    // From `named`, the last value accepted going `outward` (+1 or −1 a step) from the first
+    // accepted going the other way.
+    let edge = |named: u32, outward: i32| {
+        let step = |m: u32, by: i32| m.checked_add_signed(by).filter(|&m| m <= 180_000);
+        let mut m = named;
+        for _ in 0..64 {
+            if accepts(m) {
+                for _ in 0..64 {
+                    match step(m, outward).filter(|&next| accepts(next)) {
+                        Some(next) => m = next,
+                        None => break,
+                    }
+                }
+                return m;
+            }
+            match step(m, -outward) {
+                Some(inner) => m = inner,
+                None => break,
+            }
+        }
+        named
+    };
+    match error {
+        Error::FieldOfViewTooWide { max_millidegrees } => Error::FieldOfViewTooWide {
+            max_millidegrees: edge(max_millidegrees, 1),
+        },
+        Error::FieldOfViewTooNarrow { min_millidegrees } => Error::FieldOfViewTooNarrow {
+            min_millidegrees: edge(min_millidegrees, -1),
+        },
+        other => other,
+    }
+}
+
 /// `v`'s unit vector ([`Vec3::try_normalize`]), out of line: the look-at set-up normalises
 /// three vectors, and one copy of the code serves all three. Inlined into a firmware's set-up
 /// they took about 470 bytes more flash on a Cortex-M4F.
@@ -408,18 +475,17 @@ impl Camera {
         }
         let right = unit_of_exact(exact_cross(view, up)).unwrap_or(Vec3::X);
         let down = -right.cross(forward);
-        let half_angle = fov_y_degrees.to_radians() / 2.0;
-        let screen_h = 2.0 * libm::tanf(half_angle);
-        let pitch = screen_h / rows as f32;
+        let aspect = down.length();
         Camera::checked(
             eye,
             forward,
-            view_distance(1.0 / pitch),
-            (right, down, down.length()),
+            view_of_fov(fov_y_degrees, rows),
+            (right, down, aspect),
             Fx::ONE,
             cols,
             rows,
         )
+        .map_err(|error| accepted_limit(error, aspect, cols, rows))
     }
 
     /// The orbiting camera of [`Camera::orbit`], its size in pixels checked.
