@@ -279,7 +279,11 @@ pub(crate) fn near_row_plane(sphere: &Sphere, eye: Vec3, normal: Vec3) -> bool {
 /// How far, in raw units, a row's rays may lie from the row's plane at a distance of at most
 /// `reach` raw units from the eye (an `|x| + |y| + |z|`, at least the distance): ray
 /// directions are within a few units of 2⁻¹⁶ of the row plane, so over a distance D they
-/// stray by less than D · 2⁻¹², and the normal's own rounding adds as much again.
+/// stray by less than D · 2⁻¹², and the normal's own rounding adds as much again. Both hold
+/// however short the rays' unnormalised directions are: every one of them lies exactly in
+/// the plane, and `Camera::row_plane_normal` forms its normal exactly before rounding it (to
+/// 0.55 of a unit a component) — a normal rounded from a product with a direction a few
+/// raw units long, as the widest views of one-pixel screens have, would not be.
 #[inline(always)]
 const fn stray(reach: i64) -> i64 {
     (reach >> 11) + (1 << 8)
