@@ -77,14 +77,20 @@ pub enum Error {
     /// pixels apart to within half a pixel.
     FieldOfViewTooNarrow {
         /// The narrowest vertical field of view allowed for that screen, in thousandths of a
-        /// degree (rounded up).
+        /// degree: for [`Camera::look_at`](crate::Camera::look_at) and
+        /// [`Camera::orbit`](crate::Camera::orbit), the narrowest whole number of thousandths
+        /// the same camera accepts; for a pinhole, which takes no field of view, the budget's
+        /// limit rounded up.
         min_millidegrees: u32,
     },
     /// A field of view too wide for a camera's screen: the rays near its edges would be
     /// rounded by more than half a pixel.
     FieldOfViewTooWide {
         /// The widest vertical field of view allowed for that screen, in thousandths of a
-        /// degree (rounded down).
+        /// degree: for [`Camera::look_at`](crate::Camera::look_at) and
+        /// [`Camera::orbit`](crate::Camera::orbit), the widest whole number of thousandths the
+        /// same camera accepts; for a pinhole, which takes no field of view, the budget's
+        /// limit rounded down.
         max_millidegrees: u32,
     },
     /// An object index past the last object of a scene.

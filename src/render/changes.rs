@@ -443,7 +443,7 @@ impl Damage {
     /// of the camera's span of each by the rows whose culling keeps it (what `render_row`
     /// tries it on), met with its outline. `O(rows · marked)`: each row's plane is found once
     /// for both scenes, and only the marked spheres are tested against it, by the test
-    /// [`Scene::seen_from_row`] makes.
+    /// `Scene::seen_from_row_plane` makes.
     fn silhouettes<const N: usize, const L: usize>(
         &mut self,
         scenes: [(&Scene<N, L>, &[bool; N]); 2],

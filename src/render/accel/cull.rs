@@ -37,7 +37,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         self.seen_from_row_plane(camera.eye(), camera.row_plane_normal(row))
     }
 
-    /// [`Scene::seen_from_row`] given the row's plane's unit normal `normal`
+    /// `Scene::seen_from_row` given the row's plane's unit normal `normal`
     /// (`Camera::row_plane_normal`), which `None` leaves every object in.
     pub(crate) fn seen_from_row_plane(&self, eye: Vec3, normal: Option<Vec3>) -> u64 {
         let Some(normal) = normal else {
@@ -264,7 +264,7 @@ fn before_plane(sphere: &Sphere, plane: &Plane, from_eye: &Numerator, eye: Vec3)
 }
 
 /// Whether `sphere` may meet a ray of the row whose plane through `eye` has the unit normal
-/// `normal` (see `Camera::row_plane_normal`): [`Scene::seen_from_row`]'s test for one sphere,
+/// `normal` (see `Camera::row_plane_normal`): `Scene::seen_from_row_plane`'s test for one sphere,
 /// which the damage of an edit repeats exactly.
 pub(crate) fn near_row_plane(sphere: &Sphere, eye: Vec3, normal: Vec3) -> bool {
     let to_centre = sphere.centre() - eye;
@@ -275,7 +275,11 @@ pub(crate) fn near_row_plane(sphere: &Sphere, eye: Vec3, normal: Vec3) -> bool {
 /// How far, in raw units, a row's rays may lie from the row's plane at a distance of at most
 /// `reach` raw units from the eye (an `|x| + |y| + |z|`, at least the distance): ray
 /// directions are within a few units of 2⁻¹⁶ of the row plane, so over a distance D they
-/// stray by less than D · 2⁻¹², and the normal's own rounding adds as much again.
+/// stray by less than D · 2⁻¹², and the normal's own rounding adds as much again. Both hold
+/// however short the rays' unnormalised directions are: every one of them lies exactly in
+/// the plane, and `Camera::row_plane_normal` forms its normal exactly before rounding it (to
+/// 0.55 of a unit a component) — a normal rounded from a product with a direction a few
+/// raw units long, as the widest views of one-pixel screens have, would not be.
 const fn stray(reach: i64) -> i64 {
     (reach >> 11) + (1 << 8)
 }

@@ -11,7 +11,7 @@ use crate::scene::Scene;
 
 /// The runs of one display row, left to right.
 ///
-/// A row's rays lie in one plane through the eye ([`Scene::seen_from_row`] drops the spheres
+/// A row's rays lie in one plane through the eye (`Scene::seen_from_row_plane` drops the spheres
 /// that plane misses), each remaining sphere covers a span of columns (`Camera::column_span`),
 /// and a plane is missed by a whole run when every ray of it points away from the plane or
 /// along it. Between the ends of spans the set of objects worth trying is constant: a run.

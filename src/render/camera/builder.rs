@@ -101,7 +101,9 @@ impl Camera {
     /// about the vertical (+y) axis, 0° (unless set) placing the eye on the +z side, and
     /// [`Orbit::pitch_degrees`] raises it above the horizon (strictly between −90° and 90°;
     /// 0° unless set). Up is +y; the field of view and size are set as for
-    /// [`Camera::look_at`].
+    /// [`Camera::look_at`]. The distance must be positive, and no longer than two points
+    /// within ±[`LIMIT`](crate::LIMIT) can be apart (`2·1024·√3`, about 3547.24): else
+    /// [`Error::OutOfRange`] names [`Quantity::OrbitDistance`](crate::Quantity::OrbitDistance).
     ///
     /// The eye's position uses micromath's `sin` and `cos` (about 10⁻³ absolute error), which
     /// moves the eye slightly along its orbit but never off the view it aims at: the view
@@ -115,6 +117,12 @@ impl Camera {
     /// assert!(cam.eye().x.abs() < Fx::from_num(0.05) && cam.eye().z.abs() < Fx::from_num(0.05));
     /// let overhead = Camera::orbit([0.0; 3], 10.0).pitch_degrees(90.0);
     /// assert!(overhead.size(Size::new(160, 128)).build().is_err());
+    /// // A negative distance is refused, not turned into an orbit on the far side.
+    /// let behind = Camera::orbit([0.0; 3], -10.0).size(Size::new(160, 128)).build();
+    /// assert!(matches!(
+    ///     behind,
+    ///     Err(fixray::Error::OutOfRange { quantity: fixray::Quantity::OrbitDistance, .. })
+    /// ));
     /// # Ok::<(), fixray::Error>(())
     /// ```
     pub const fn orbit(target: [f32; 3], distance: f32) -> Orbit {

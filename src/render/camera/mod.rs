@@ -35,6 +35,12 @@ pub const MAX_PIXELS: u32 = 4096;
 /// 2⁻¹⁵ · B = ½. Narrow fields of view meet the budget at `F ≈ B`, wide ones at `F ≈ R²/B`.
 const RAY_BUDGET_PX: u32 = 16_384;
 
+/// The longest distance [`Camera::orbit`] takes: between two points within ±[`LIMIT`] (the
+/// eye and the target), at most `2·1024·√3` = 3547.24005…, rounded down to Q16.16.
+///
+/// [`LIMIT`]: crate::LIMIT
+const ORBIT_REACH: Fx = Fx::from_bits(232_471_924);
+
 /// A camera: a viewpoint and a screen of `width × height` pixels in front of it, made by a
 /// builder: [`Camera::look_at`], [`Camera::orbit`] or the chapter's [`Camera::pinhole`].
 ///
@@ -249,11 +255,130 @@ fn doubled_angle(atan_x: u64, atan_y: u64) -> u64 {
     angle.max(0) as u64
 }
 
+/// The view distance in pixels of a look-at camera of `rows` rows whose vertical field of
+/// view is `fov_y_degrees` (strictly between 0 and 180), as its builder rounds it: the screen
+/// is `2·tan(fov/2)` high one unit from the eye.
+fn view_of_fov(fov_y_degrees: f32, rows: u16) -> Fx {
+    let half_angle = fov_y_degrees.to_radians() / 2.0;
+    let screen_h = 2.0 * libm::tanf(half_angle);
+    let pitch = screen_h / rows as f32;
+    view_distance(1.0 / pitch)
+}
+
+/// A look-at camera's refusal `error` with the limit it names made the one that camera
+/// accepts: the widest (or narrowest) field of view in whole thousandths of a degree whose
+/// view distance, as [`view_of_fov`] rounds it, passes [`check_budget`] for a screen of
+/// `cols × rows` pixels whose row step is `aspect` long. Other errors are left as they are.
+///
+/// [`check_budget`] names its limit from the budget's continuous equation, to within 10⁻⁵
+/// millidegrees; but the view distance it checks is rounded to Q16.16, which on the widest
+/// views of small screens (a view distance of a few units of 2⁻¹⁶ pixels) moves the field of
+/// view it stands for by up to about 3.5 millidegrees (one unit of 2⁻¹⁶ at a view distance
+/// of `F` pixels turns the edge of a screen `h` rows high by `2⁻¹⁶ · h / (F² + h²/4)`
+/// radians, at most `4 · 2⁻¹⁶` for one row). So the named value is a start: from it, a
+/// thousandth at a time, inwards until the camera accepts it, then outwards while it still
+/// does. Acceptance changes once along each way (the view distance falls as the field of view
+/// widens, and `F² + R² ≤ B·F` holds between two roots), so that is the widest accepted;
+/// a few steps in all, each one tangent, on a path only a refused camera takes. Each way
+/// takes at most 64 steps (no screen comes near); should none inwards be accepted, the named
+/// value is left.
+// Out of line, as `doubled_angle` is: only a refused camera comes here.
+fn accepted_limit(error: Error, aspect: Fx, cols: u16, rows: u16) -> Error {
+    let accepts = |millidegrees: u32| {
+        let fov = millidegrees as f32 / 1000.0;
+        fov > 0.0 && fov < 180.0 && check_budget(view_of_fov(fov, rows), aspect, cols, rows).is_ok()
+    };
+    // From `named`, the last value accepted going `outward` (+1 or −1 a step) from the first
+    // accepted going the other way.
+    let edge = |named: u32, outward: i32| {
+        let step = |m: u32, by: i32| m.checked_add_signed(by).filter(|&m| m <= 180_000);
+        let mut m = named;
+        for _ in 0..64 {
+            if accepts(m) {
+                for _ in 0..64 {
+                    match step(m, outward).filter(|&next| accepts(next)) {
+                        Some(next) => m = next,
+                        None => break,
+                    }
+                }
+                return m;
+            }
+            match step(m, -outward) {
+                Some(inner) => m = inner,
+                None => break,
+            }
+        }
+        named
+    };
+    match error {
+        Error::FieldOfViewTooWide { max_millidegrees } => Error::FieldOfViewTooWide {
+            max_millidegrees: edge(max_millidegrees, 1),
+        },
+        Error::FieldOfViewTooNarrow { min_millidegrees } => Error::FieldOfViewTooNarrow {
+            min_millidegrees: edge(min_millidegrees, -1),
+        },
+        other => other,
+    }
+}
+
 /// `v`'s unit vector ([`Vec3::try_normalize`]), out of line: the look-at set-up normalises
 /// three vectors, and one copy of the code serves all three. Inlined into a firmware's set-up
 /// they took about 470 bytes more flash on a Cortex-M4F.
 fn unit(v: Vec3) -> Option<Vec3> {
     v.try_normalize()
+}
+
+/// The unit vector along the exact integer vector `v` (any scale; components within ±2⁶²),
+/// or `None` for the zero vector: each component within 0.55 of a unit of 2⁻¹⁶ of exact, and
+/// a further 2⁻³⁰ at most.
+///
+/// `v` is first brought to a largest component of 2²⁹ to 2³⁰ in magnitude, so that it fits
+/// Q16.16 with room for the normalisation's squares: by a left shift if smaller (exact), or a
+/// right shift rounded to nearest if larger (each component then moves by at most half a
+/// unit, the whole by at most √3/2 units of a length of at least 2²⁹: a direction within
+/// 2⁻²⁹ of `v`'s). [`Vec3::try_normalize`] then does the rest, to 0.55 of a unit of 2⁻¹⁶.
+fn unit_of_exact(v: [i64; 3]) -> Option<Vec3> {
+    let largest = v.iter().map(|c| c.unsigned_abs()).max().unwrap_or(0);
+    if largest == 0 {
+        return None;
+    }
+    // The bit length of `largest` brought to 30: 2²⁹ ≤ largest < 2³⁰ once shifted.
+    let length = 64 - largest.leading_zeros() as i32;
+    let scaled = |c: i64| {
+        let bits = if length <= 30 {
+            c << (30 - length)
+        } else {
+            let down = (length - 30) as u32;
+            (c + (1 << (down - 1))) >> down
+        };
+        // At most 2³⁰ in magnitude (a rounded-up top component), so it fits.
+        Fx::from_bits(bits as i32)
+    };
+    Vec3::new(scaled(v[0]), scaled(v[1]), scaled(v[2])).try_normalize()
+}
+
+/// `a × b` exactly, in raw units of 2⁻³², for `a` within ±2048 and `b` within ±1024 (an
+/// offset between two points of the overflow-safe range, and one such point): each product
+/// of two components is below 2²⁷ · 2²⁶ = 2⁵³ and each difference below 2⁵⁴.
+///
+/// The look-at camera's `right` is the unit vector along `(target − eye) × up`, formed so
+/// from the values it was given rather than from their unit vectors rounded to Q16.16: the
+/// cross product of two unit vectors `θ` apart, each off by up to 2⁻¹⁶ a component, points
+/// up to about 2⁻¹⁶/sin θ off in the plane of the screen, which turns the picture about its
+/// centre by several pixels at the corners of a large screen with `up` a degree off the
+/// view (10.8 pixels at 4096 × 4096 with `up` 0.25° off). Formed exactly and normalised
+/// once ([`unit_of_exact`]), `right` is within 0.55 of a unit of 2⁻¹⁶ a component of exact
+/// whatever θ, and `down = −right × forward` (two unit vectors at right angles) within a few
+/// units: the basis the ray budget's half pixel assumes.
+fn exact_cross(a: Vec3, b: Vec3) -> [i64; 3] {
+    let c = |p: Fx, q: Fx, s: Fx, t: Fx| {
+        p.to_bits() as i64 * q.to_bits() as i64 - s.to_bits() as i64 * t.to_bits() as i64
+    };
+    [
+        c(a.y, b.z, a.z, b.y),
+        c(a.z, b.x, a.x, b.z),
+        c(a.x, b.y, a.y, b.x),
+    ]
 }
 
 impl Camera {
@@ -335,31 +460,29 @@ impl Camera {
         if !(fov_y_degrees > 0.0 && fov_y_degrees < 180.0) {
             return Err(Error::DegenerateCamera(CameraProblem::FieldOfView));
         }
-        let forward =
-            unit(target - eye).ok_or(Error::DegenerateCamera(CameraProblem::TargetIsEye))?;
-        let up = unit(up).ok_or(Error::DegenerateCamera(CameraProblem::UpIsZero))?;
-        let side = forward.cross(up);
+        let view = target - eye;
+        let forward = unit(view).ok_or(Error::DegenerateCamera(CameraProblem::TargetIsEye))?;
+        let unit_up = unit(up).ok_or(Error::DegenerateCamera(CameraProblem::UpIsZero))?;
         // Unit vectors closer than about 0.2° to parallel do not define a picture's up: a
         // length below 2⁻⁸. Compared as the exact square (below 2⁻¹⁶), which is the same test
         // since `length` is the floor of the root, without an inlined square root (about
         // 360 bytes of flash on a Cortex-M4F).
-        if side.length_squared_wide() < 1 << (2 * (FRAC - 8)) {
+        if forward.cross(unit_up).length_squared_wide() < 1 << (2 * (FRAC - 8)) {
             return Err(Error::DegenerateCamera(CameraProblem::UpAlongView));
         }
-        let right = unit(side).unwrap_or(Vec3::X);
+        let right = unit_of_exact(exact_cross(view, up)).unwrap_or(Vec3::X);
         let down = -right.cross(forward);
-        let half_angle = fov_y_degrees.to_radians() / 2.0;
-        let screen_h = 2.0 * libm::tanf(half_angle);
-        let pitch = screen_h / rows as f32;
+        let aspect = down.length();
         Camera::checked(
             eye,
             forward,
-            view_distance(1.0 / pitch),
-            (right, down, down.length()),
+            view_of_fov(fov_y_degrees, rows),
+            (right, down, aspect),
             Fx::ONE,
             cols,
             rows,
         )
+        .map_err(|error| accepted_limit(error, aspect, cols, rows))
     }
 
     /// The orbiting camera of [`Camera::orbit`], its size in pixels checked.
@@ -382,6 +505,9 @@ impl Camera {
                 return Err(Error::NotFinite { quantity });
             }
         }
+        // A distance that is not positive would put the eye on the far side of the target, or
+        // on it; one past the longest distance within the overflow-safe cube, outside it.
+        check::f32_within(distance, Fx::DELTA, ORBIT_REACH, Quantity::OrbitDistance)?;
         if !(pitch_degrees > -90.0 && pitch_degrees < 90.0) {
             return Err(Error::DegenerateCamera(CameraProblem::OrbitPitch));
         }
@@ -603,10 +729,36 @@ impl Camera {
     /// The unit normal of the plane through the eye that holds every ray of display row
     /// `row` (the rays of a row differ only along `right`), or `None` if it is degenerate.
     /// Any `u16` row: off the screen, its direction towards column 0 is scaled to fit.
+    ///
+    /// Each component is within 0.55 of a unit of 2⁻¹⁶ of the exact unit normal of the plane
+    /// the row's rays lie in, however short their directions: the culling of
+    /// `Scene::seen_from_row_plane`, its row balls, the shadow sets
+    /// of a row and the damage of an edit take their margins from that.
+    ///
+    /// The unnormalised direction towards column `x` is exactly `w + x·right`, `w` the one
+    /// towards column 0 (each column adds `2·right` to a numerator halved with rounding), so
+    /// every ray of the row lies in the plane through the eye along `right` and `w`, whose
+    /// normal is `right × w`. That product is formed exactly here, in raw units of 2⁻³²: a
+    /// component of `right` (a unit vector) is at most 2¹⁶ + 1 raw, one of `w` at most 2³⁰ + 1
+    /// (the ray budget on the screen, [`Camera::shift_to_fit`] off it), so each product of two
+    /// is below 2⁴⁷ and each difference below 2⁴⁸: no overflow. [`unit_of_exact`] then
+    /// scales it to a top component of 2²⁹ to 2³⁰ (exact, or rounded to within 2⁻³⁰ of its
+    /// length) and normalises it, the one rounding that matters.
+    ///
+    /// Rounding `right × w` to Q16.16 first, as this once did, is not enough: the ray budget
+    /// lets the view distance fall to `R²/16 384` pixels, a `w` of about ten raw units on a
+    /// one-pixel screen at 179.96°, and a cross product rounded to 2⁻¹⁶ then points
+    /// hundredths of a radian off, far past the culling's margin of 2⁻¹¹ of a distance.
     pub(crate) fn row_plane_normal(&self, row: u16) -> Option<Vec3> {
-        self.right
-            .cross(self.towards(0, row.into()))
-            .try_normalize()
+        let (r, w) = (self.right, self.towards(0, row.into()));
+        let c = |p: Fx, q: Fx, s: Fx, t: Fx| {
+            fx::wide_mul(p.to_bits(), q.to_bits()) - fx::wide_mul(s.to_bits(), t.to_bits())
+        };
+        unit_of_exact([
+            c(r.y, w.z, r.z, w.y),
+            c(r.z, w.x, r.x, w.z),
+            c(r.x, w.y, r.y, w.x),
+        ])
     }
 
     /// The columns whose rays can meet a sphere of `radius` at `centre`, as a conservative
