@@ -116,26 +116,41 @@ impl<const N: usize, const L: usize> Scene<N, L> {
             return self.matte_pixel(&object.material, diffuse, object.colour_at(at.point));
         }
         let light = self.local(object, &at, ray.dir);
-        rgb_of(self.followed(light, ray.dir, &h))
+        let local = |object: &Object, at: &Surface, view: Vec3| self.local(object, at, view);
+        rgb_of(self.followed(light, ray.dir, &h, &local))
     }
 
     /// The light arriving along `dir` from its first hit `first`, whose own light is
     /// `light`: that alone on a surface that neither mirrors nor refracts, and otherwise with
-    /// the tree of secondary rays the surface sends on.
-    pub(crate) fn followed(&self, light: Linear, dir: Vec3, first: &SceneHit) -> Linear {
+    /// the tree of secondary rays the surface sends on, each hit's own light from `local`
+    /// (the plain path's is [`Scene::local`]; the rows' finds the same light for less).
+    pub(crate) fn followed(
+        &self,
+        light: Linear,
+        dir: Vec3,
+        first: &SceneHit,
+        local: &impl Fn(&Object, &Surface, Vec3) -> Linear,
+    ) -> Linear {
         match self.objects().get(first.object) {
             Some(object)
                 if object.material.reflect != Fx::ZERO || object.material.refraction.is_some() =>
             {
-                self.secondary(light, dir, first)
+                self.secondary(light, dir, first, local)
             }
             _ => light,
         }
     }
 
     /// The light arriving along `dir` past a first surface `first` that mirrors or refracts:
-    /// `sum` is that surface's own light, and the tree of secondary rays is followed from it.
-    fn secondary(&self, mut sum: Linear, dir: Vec3, first: &SceneHit) -> Linear {
+    /// `sum` is that surface's own light, and the tree of secondary rays is followed from it,
+    /// each hit's own light from `local`.
+    fn secondary(
+        &self,
+        mut sum: Linear,
+        dir: Vec3,
+        first: &SceneHit,
+        local: &impl Fn(&Object, &Surface, Vec3) -> Linear,
+    ) -> Linear {
         let mut waiting = Waiting::new();
         let exiting = self.exits(first, None);
         self.branch(&mut sum, &mut waiting, dir, first, exiting, Fx::ONE, 0);
@@ -163,7 +178,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
                 Start::Off(_) => None,
             };
             let exiting = self.exits(&h, within);
-            let light = self.local(object, &Surface::of(&h), next.dir);
+            let light = local(object, &Surface::of(&h), next.dir);
             add(&mut sum, next.weight, light);
             self.branch(
                 &mut sum,

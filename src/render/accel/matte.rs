@@ -122,7 +122,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
                     diffuse = diffuse.saturating_add(fx::mul_unit(light.intensity, cos));
                 }
             }
-            self.matte_pixel(material, diffuse, object.colour_at(point))
+            self.matte_pixel_within_one(material, diffuse, object.colour_at(point))
         };
         // The stretches where no shadow ray needs a test, most of a floor: within reach at both
         // ends, their own loop, which takes only the cosine; a stretch that reaches past FAR
@@ -238,7 +238,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
                     Some(cos) => fx::mul_unit(light.intensity, cos),
                     None => Fx::ZERO,
                 };
-                self.paint_matte(material, diffuse, material.colour, pixel);
+                *pixel = self.matte_pixel_within_one(material, diffuse, material.colour);
                 offsets.step_across();
             }
             return;
@@ -255,7 +255,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
                     let diffuse = self.lights().iter().fold(Fx::ZERO, |sum, light| {
                         sum.saturating_add(diffuse_from(light, point))
                     });
-                    self.matte_pixel(material, diffuse, object.colour_at(point))
+                    self.matte_pixel_within_one(material, diffuse, object.colour_at(point))
                 }
                 None => self.background_past_bounds(camera, walk.towards, k),
             };

@@ -17,7 +17,7 @@ use crate::render::highlight::highlight_below;
 use crate::render::trace::{Surface, scaled_channel};
 use crate::scene::hit::SceneHit;
 use crate::scene::light::Light;
-use crate::scene::linear::{powi, rgb_of};
+use crate::scene::linear::{Linear, powi, rgb_of};
 use crate::scene::{Material, Object, Rgb, Scene};
 
 impl<const N: usize, const L: usize> Scene<N, L> {
@@ -34,26 +34,45 @@ impl<const N: usize, const L: usize> Scene<N, L> {
             return self.shade(ray, None);
         };
         let at = Surface::of(&h);
-        let on_plane = matches!(object.shape, Shape::Plane(_));
-        let among = |light: usize| self.shadow_set(light, on_plane, plane_shadowers);
+        let sets = match object.shape {
+            Shape::Plane(_) => plane_shadowers,
+            Shape::Sphere(_) => &[!0; L],
+        };
+        let material = &object.material;
+        if material.is_plain_matte() {
+            let diffuse = (self.lights().iter().enumerate()).fold(Fx::ZERO, |sum, (i, light)| {
+                match self.reaches_among(i, light, &at, self.shadow_set(i, sets)) {
+                    Some((_, cos)) => sum.saturating_add(fx::mul_unit(light.intensity, cos)),
+                    None => sum,
+                }
+            });
+            return self.matte_pixel_within_one(material, diffuse, object.colour_at(at.point));
+        }
+        let light = self.local_among(object, &at, ray.dir, sets);
+        let local = |object: &Object, at: &Surface, view: Vec3| {
+            self.local_among(object, at, view, &[!0; L])
+        };
+        rgb_of(self.followed(light, ray.dir, &h, &local))
+    }
+
+    /// `Scene::local`: the light of `object` at `at` seen along `view`, whose shadow ray
+    /// towards light `i` tries only the objects of `sets[i]`, and whose highlights are formed
+    /// only where they are not 0.
+    fn local_among(&self, object: &Object, at: &Surface, view: Vec3, sets: &[u32; L]) -> Linear {
         let material = &object.material;
         let (mut diffuse, mut specular) = (Fx::ZERO, Fx::ZERO);
         for (i, light) in self.lights().iter().enumerate() {
-            let Some((l, cos)) = self.reaches_among(i, light, &at, among(i)) else {
+            let Some((l, cos)) = self.reaches_among(i, light, at, self.shadow_set(i, sets)) else {
                 continue;
             };
             diffuse = diffuse.saturating_add(fx::mul_unit(light.intensity, cos));
             if material.specular > Fx::ZERO {
-                let term = highlight_if_lit(material, light, at.normal, l, ray.dir);
+                let term = highlight_if_lit(material, light, at.normal, l, view);
                 specular = specular.saturating_add(term);
             }
         }
-        let colour = object.colour_at(at.point);
-        if material.is_plain_matte() {
-            return self.matte_pixel(material, diffuse, colour);
-        }
-        let light = self.with_highlight(self.lit(material, diffuse, colour), material, specular);
-        rgb_of(self.followed(light, ray.dir, &h))
+        let lit = self.lit(material, diffuse, object.colour_at(at.point));
+        self.with_highlight(lit, material, specular)
     }
 
     /// [`Scene::reaches`] for light `light_index` (`light`), whose shadow ray tries only the
@@ -137,41 +156,29 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         set.copied().filter(|_| self.objects().len() <= 32)
     }
 
-    /// The objects a shadow ray towards light `light_index` tries from a surface (a plane's
-    /// row set where `on_plane`, every object otherwise), or `None` where shadows are off.
-    fn shadow_set(
-        &self,
-        light_index: usize,
-        on_plane: bool,
-        plane_shadowers: &[u32; L],
-    ) -> Option<u32> {
+    /// The objects a shadow ray towards light `light_index` tries, `sets[light_index]`, or
+    /// `None` where shadows are off.
+    fn shadow_set(&self, light_index: usize, sets: &[u32; L]) -> Option<u32> {
         self.shadows()
-            .then(|| match plane_shadowers.get(light_index) {
-                Some(&set) if on_plane => set,
-                _ => !0,
-            })
+            .then(|| sets.get(light_index).copied().unwrap_or(!0))
     }
 
-    /// [`Scene::matte_pixel`], written into `pixel` a channel at a time, for the loops of
-    /// matte pixels: up to a brightness of 1, the common case, no channel passes 255
-    /// (255·2¹⁶ + 2¹⁵ is below 256·2¹⁶), so there is nothing to hold.
-    pub(crate) fn paint_matte(
+    /// [`Scene::matte_pixel`] for the loops of matte pixels: up to a brightness of 1, the
+    /// common case, no channel passes 255 (255·2¹⁶ + 2¹⁵ is below 256·2¹⁶), so there is
+    /// nothing to hold.
+    pub(crate) fn matte_pixel_within_one(
         &self,
         material: &Material,
         diffuse: Fx,
         colour: Rgb,
-        pixel: &mut Rgb,
-    ) {
+    ) -> Rgb {
         let k = self.brightness(material, diffuse).to_bits();
         // Above 1 (and below 0, which as a `u32` is above too) the plain form holds them.
         if (k as u32) > 1 << 16 {
-            *pixel = self.matte_pixel(material, diffuse, colour);
-            return;
+            return self.matte_pixel(material, diffuse, colour);
         }
         let channel = |c: u8| scaled_channel(c, k as u32) as u8;
-        pixel.r = channel(colour.r);
-        pixel.g = channel(colour.g);
-        pixel.b = channel(colour.b);
+        Rgb::new(channel(colour.r), channel(colour.g), channel(colour.b))
     }
 }
 
