@@ -8,6 +8,8 @@ pub const RENDER_FAILED: i32 = 2;
 pub const COUNTER_WRONG: i32 = 3;
 /// A fault or an unexpected exception or interrupt.
 pub const FAULT: i32 = 4;
+/// A probe of [`crate::codegen`] gave a wrong answer: the compiler miscompiles it here.
+pub const MISCOMPILED: i32 = 5;
 // A panic exits with 101, from `semihosting`'s panic handler.
 
 /// Ends the QEMU run with `status`.

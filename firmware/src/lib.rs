@@ -37,7 +37,8 @@
 //! [`calibrate`] (the loop of known length), [`stack`] (paint and measure the stack),
 //! [`memory`] (flash and static RAM from the linker's symbols), [`fault`] (faults exit QEMU
 //! non-zero), [`exit`] (the exit statuses), [`renderer`] (what is rendered: the scenes and the
-//! [`Renderer`]s), [`harness`] (the measured frames), and [`main!`] (a binary's entry point).
+//! [`Renderer`]s), [`harness`] (the measured frames), [`codegen`] (probes of known compiler
+//! miscompiles, run by the `codegen_check` binary), and [`main!`] (a binary's entry point).
 //! `build.rs` picks each board's memory layout from `memory/`.
 //!
 //! Run one firmware from this directory with, for example,
@@ -64,6 +65,7 @@ compile_error!(
 
 pub mod animation;
 pub mod calibrate;
+pub mod codegen;
 pub mod counter;
 pub mod exit;
 pub mod fault;
