@@ -65,7 +65,7 @@ use crate::scene::Scene;
 pub const MAX_RECTANGLES: usize = 8;
 
 /// A rectangle of whole pixels within the screen: columns `left..right`, rows `top..bottom`;
-/// never empty, but for [`Area::EMPTY`], which fills the places a [`Damage`] does not use.
+/// never empty.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 struct Area {
     left: u16,
@@ -75,13 +75,6 @@ struct Area {
 }
 
 impl Area {
-    const EMPTY: Area = Area {
-        left: 0,
-        top: 0,
-        right: 0,
-        bottom: 0,
-    };
-
     fn pixels(&self) -> u32 {
         u32::from(self.right - self.left) * u32::from(self.bottom - self.top)
     }
@@ -119,10 +112,9 @@ impl Area {
 /// Up to [`MAX_RECTANGLES`] rectangles are kept; when another is needed, the two whose
 /// bounding box adds the fewest pixels to their union are merged into it. The storage is
 /// inside the value.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Damage {
-    areas: [Area; MAX_RECTANGLES],
-    count: usize,
+    areas: heapless::Vec<Area, MAX_RECTANGLES>,
     whole: bool,
     cols: u16,
     rows: u16,
@@ -133,8 +125,7 @@ impl Damage {
     #[must_use]
     pub const fn none(camera: &Camera) -> Self {
         Damage {
-            areas: [Area::EMPTY; MAX_RECTANGLES],
-            count: 0,
+            areas: heapless::Vec::new(),
             whole: false,
             cols: camera.cols(),
             rows: camera.rows(),
@@ -207,8 +198,8 @@ impl Damage {
 
     /// Whether nothing needs redrawing.
     #[must_use]
-    pub const fn is_empty(&self) -> bool {
-        !self.whole && self.count == 0
+    pub fn is_empty(&self) -> bool {
+        !self.whole && self.areas.is_empty()
     }
 
     /// Whether the whole screen needs redrawing.
@@ -280,7 +271,7 @@ impl Damage {
     }
 
     fn areas(&self) -> &[Area] {
-        &self.areas[..self.count.min(MAX_RECTANGLES)]
+        &self.areas
     }
 
     /// Adds an area; when all places are taken, the pair of the areas (the new one
@@ -290,25 +281,12 @@ impl Damage {
             return;
         }
         // Drop the areas the new one covers.
-        let mut kept = 0;
-        for i in 0..self.count.min(MAX_RECTANGLES) {
-            if !area.contains(&self.areas[i]) {
-                self.areas[kept] = self.areas[i];
-                kept += 1;
-            }
-        }
-        self.count = kept;
-        // Unused places hold the empty area, so that equal regions compare equal.
-        for slot in self.areas.iter_mut().skip(kept) {
-            *slot = Area::EMPTY;
-        }
-        if let Some(slot) = self.areas.get_mut(self.count) {
-            *slot = area;
-            self.count += 1;
+        self.areas.retain(|a| !area.contains(a));
+        let Err(area) = self.areas.push(area) else {
             return;
-        }
-        let mut all = [area; MAX_RECTANGLES + 1];
-        all[..MAX_RECTANGLES].copy_from_slice(&self.areas);
+        };
+        let mut all: heapless::Vec<Area, { MAX_RECTANGLES + 1 }> = heapless::Vec::new();
+        all.extend(self.areas.iter().copied().chain([area]));
         let (mut best, mut pair) = (u32::MAX, (0, MAX_RECTANGLES));
         for i in 0..all.len() {
             for j in i + 1..all.len() {
@@ -322,11 +300,11 @@ impl Damage {
             }
         }
         let merged = all[pair.0].hull(&all[pair.1]);
-        self.count = 0;
+        self.areas.clear();
         for (index, a) in all.iter().enumerate() {
             if index != pair.0 && index != pair.1 {
-                self.areas[self.count] = *a;
-                self.count += 1;
+                // Seven of the nine: room for each.
+                let _ = self.areas.push(*a);
             }
         }
         // Seven areas are left: the merged one goes in the eighth place, through `add` so
@@ -569,7 +547,7 @@ mod tests {
             bottom: 5
         }));
         // A covered area adds nothing; one covering others replaces them.
-        let before = damage;
+        let before = damage.clone();
         damage.add(square(78, 0));
         assert_eq!(damage, before);
         damage.add(Area {
