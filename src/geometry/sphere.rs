@@ -166,6 +166,7 @@ impl Sphere {
     // In line (with `hit_at`) on every chip but the Cortex-M0: the calls, and the hit handed
     // back through memory, cost a sphere pixel more than its copies cost flash. On the M0,
     // whose flash the firmware is held to, one copy.
+    #[inline(always)]
     pub(crate) fn hit_distance(&self, ray: &Ray) -> Option<Fx> {
         self.hit_distance_within(ray, FAR)
     }
@@ -294,6 +295,7 @@ impl Sphere {
 
     /// The hit at distance `t` along `ray`: its point, and its normal facing the ray.
     // In line but on the Cortex-M0, as `hit_distance` is.
+    #[inline(always)]
     pub(crate) fn hit_at(&self, ray: &Ray, t: Fx) -> Hit {
         let point = ray.at_hit(t);
         Hit::facing(t, point, self.outward_normal(point), ray.dir)

@@ -20,6 +20,9 @@ use crate::numbers::reciprocal::{rsqrt, rsqrt_unit_and_mantissa};
 /// assert_eq!(fixray::internals::isqrt(16), 4);
 /// assert_eq!(fixray::internals::isqrt(u64::MAX), u32::MAX as u64);
 /// ```
+// In line, so that a sphere test takes its root below 2⁴⁴ without a call, which would move
+// the test's values out of the registers it clobbers; the rest is out of line.
+#[inline(always)]
 #[must_use]
 pub const fn isqrt(x: u64) -> u64 {
     if x < 2 {
@@ -29,6 +32,12 @@ pub const fn isqrt(x: u64) -> u64 {
     if x < 1 << 44 {
         return root_below_two_to_the_44(x) as u64;
     }
+    isqrt_from_two_to_the_44(x)
+}
+
+/// [`isqrt`] for `x ≥ 2⁴⁴`: the estimate's Newton step, then whole steps.
+#[inline(never)]
+const fn isqrt_from_two_to_the_44(x: u64) -> u64 {
     // The root is below 2³², and so, once clamped there, is the estimate.
     let estimate = estimate(x);
     let mut r = if estimate > u32::MAX as u64 {

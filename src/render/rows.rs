@@ -303,9 +303,7 @@ fn cast_run(
 ) {
     let mut rays = RowRays::starting(camera, towards, cols.len() as u16);
     for col in cols {
-        let Some(ray) = rays.next() else {
-            return;
-        };
+        let ray = rays.advance();
         let hit = shoot(&ray);
         each(col, col + 1, Cast::Ray(&ray, hit));
     }

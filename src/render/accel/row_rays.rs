@@ -50,6 +50,17 @@ impl<'a> RowRays<'a> {
         RowRays::starting(camera, camera.row_start(row), camera.cols())
     }
 
+    /// The next ray, and on to the column after it: [`Iterator::next`] where the caller counts
+    /// the columns (a run of them, on the screen).
+    pub(crate) fn advance(&mut self) -> Ray {
+        let ray = self
+            .camera
+            .ray_along(self.towards, self.squares.now(self.towards));
+        self.towards = self.towards.plus(self.camera.column_step());
+        self.squares.step();
+        ray
+    }
+
     /// `count` rays from the eye, the first along `towards` (a direction from
     /// [`Camera::row_start`] stepped along its row), each further one a column to the right:
     /// the rays of a run of columns, which must lie on the screen.
@@ -68,16 +79,8 @@ impl Iterator for RowRays<'_> {
 
     #[inline]
     fn next(&mut self) -> Option<Ray> {
-        if self.left == 0 {
-            return None;
-        }
-        self.left -= 1;
-        let ray = self
-            .camera
-            .ray_along(self.towards, self.squares.now(self.towards));
-        self.towards = self.towards.plus(self.camera.column_step());
-        self.squares.step();
-        Some(ray)
+        self.left = self.left.checked_sub(1)?;
+        Some(self.advance())
     }
 
     /// Skips `n` rays without making them: a few products, however many are skipped.

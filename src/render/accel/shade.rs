@@ -166,6 +166,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// [`Scene::matte_pixel`] for the loops of matte pixels: up to a brightness of 1, the
     /// common case, no channel passes 255 (255·2¹⁶ + 2¹⁵ is below 256·2¹⁶), so there is
     /// nothing to hold.
+    #[inline(always)]
     pub(crate) fn matte_pixel_within_one(
         &self,
         material: &Material,
