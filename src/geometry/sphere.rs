@@ -178,6 +178,9 @@ impl Sphere {
     /// one dot product.
     // In line on every chip: on the Cortex-M0 too, where `hit_distance` keeps one copy for
     // its callers and the row's nearest hit from the eye (`Scene::shoot_from_eye`) its own.
+    // In line: the sphere test of the nearest-hit loops (with `hit_distance` and `hit_at`,
+    // measured 2 to 6 % of the demo frame across the chips).
+    #[inline(always)]
     pub(crate) fn hit_distance_within(&self, ray: &Ray, bound: Fx) -> Option<Fx> {
         debug_assert!(bound <= FAR, "hit_distance_within: a bound past FAR");
         let to_centre = self.centre.minus(ray.origin);

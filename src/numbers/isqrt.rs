@@ -68,6 +68,8 @@ const fn isqrt_from_two_to_the_44(x: u64) -> u64 {
 /// [`isqrt`] for `2 ≤ x < 2⁴⁴`: its estimate, below 2²² and within 4 of the root, and its
 /// whole steps in 32-bit words: the residual `x − r²` lies within ±2³¹ (within about ±2²⁶ for
 /// the estimate's 4), so taken modulo 2³² it is exact.
+// In line in `isqrt`'s own in-line part (with `root_and_mantissa`: measured 1 to 3 %).
+#[inline(always)]
 const fn root_below_two_to_the_44(x: u64) -> u32 {
     let mut r = estimate(x) as u32;
     debug_assert!(
@@ -93,6 +95,7 @@ const fn root_below_two_to_the_44(x: u64) -> u32 {
 /// (`rsqrt_unit_and_mantissa`): a call would move the sphere test's values out of the registers it
 /// clobbers, and the mantissa need not be found again (on the Cortex-M0 and RV32, which have
 /// no count-leading-zeros instruction, a second bit length).
+#[inline(always)]
 const fn root_and_mantissa(x: u64) -> (u32, u32, u32) {
     if x < 1 << 44 {
         return rsqrt_unit_and_mantissa(x);

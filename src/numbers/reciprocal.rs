@@ -92,6 +92,10 @@ pub(crate) const fn rsqrt_unit(s: u64) -> (u32, u32) {
 /// estimate multiplies the root by that mantissa), where a call would move those values out
 /// of the registers it clobbers. Each caller says on which chips it takes it; a floor's
 /// columns take it through [`rsqrt_unit_near`].
+// In line: a light's direction at each lit pixel and a sphere test's root take it, where a
+// call would move their values out of the registers it clobbers (with `rsqrt_unit_near`:
+// measured 2 % of the Cortex-M0's and RV32's demo frames).
+#[inline(always)]
 #[must_use]
 pub(crate) const fn rsqrt_unit_and_mantissa(s: u64) -> (u32, u32, u32) {
     // 0 has no reciprocal root, and no bit for the table to be indexed by.
@@ -103,6 +107,7 @@ pub(crate) const fn rsqrt_unit_and_mantissa(s: u64) -> (u32, u32, u32) {
 
 /// [`rsqrt_unit_and_mantissa`] for one of a run of arguments that mostly share their even bit
 /// length, which `length` keeps from one to the next ([`EvenLength`]): the same values.
+#[inline(always)]
 #[must_use]
 pub(crate) fn rsqrt_unit_near(s: u64, length: &mut EvenLength) -> (u32, u32) {
     debug_assert!(s >= 1, "rsqrt: zero argument");

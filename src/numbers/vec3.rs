@@ -242,6 +242,9 @@ impl Vec3 {
     /// points within `LIMIT`). Where a 64-bit product is a long sequence, from the split
     /// products of [`Vec3::dot_exact`], the same value: the dot product then lies within
     /// 3·2²⁹ raw, and fits.
+    // In line, with the normalisation's parts (`normalize_by`, `unit_component_near`,
+    // `unit_factor`): measured 2 to 4 % of the demo frame on the Cortex-M0, M3 and M4F.
+    #[inline(always)]
     pub(crate) const fn dot_units(self, o: Vec3) -> Fx {
         self.dot_by::<{ fx::NO_LONG_MULTIPLY }>(o)
     }
@@ -361,6 +364,7 @@ impl Vec3 {
     }
 
     /// [`Vec3::normalize_with_square`]'s work.
+    #[inline(always)]
     const fn normalize_by(self, square: u64) -> Option<Vec3> {
         debug_assert!(
             square == self.length_squared_wide(),
@@ -390,6 +394,7 @@ impl Vec3 {
     /// [`Vec3::unit_component_with_square`] with the reciprocal root in line, for a loop that
     /// takes one a column, whose squares mostly share their even bit length: kept from one to
     /// the next in `length` ([`rsqrt_unit_near`]).
+    #[inline(always)]
     pub(crate) fn unit_component_near(c: Fx, square: u64, length: &mut EvenLength) -> Option<Fx> {
         if square == 0 {
             return None;
@@ -419,6 +424,7 @@ const fn unit_scale(square: u64) -> Option<(u32, u32)> {
 
 /// [`unit_scale`]'s factor and shift from a reciprocal root `1/√s ≈ y · 2^−(30 + half)` of the
 /// squared length `s`: `1/‖v‖` in units of 2⁻¹⁶ is `y · 2^−(30 + half) · 2¹⁶`.
+#[inline(always)]
 const fn unit_factor(y: u32, half: u32) -> (u32, u32) {
     (y, 14 + half)
 }

@@ -78,6 +78,9 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// [`Scene::reaches`] for light `light_index` (`light`), whose shadow ray tries only the
     /// objects of `among` (see [`Scene::occluded_among`]), and none where `among` is `None`
     /// (shadows off, or nothing that can block it).
+    // Out of line: every lit pixel's light, for the first surface and the matte runs alike
+    // (with `matte_pixel_within_one` in line: measured 1 to 3 %).
+    #[inline(never)]
     pub(crate) fn reaches_among(
         &self,
         light_index: usize,

@@ -52,6 +52,9 @@ impl RunLine {
 
     /// The columns (indices into the run) whose hits' shadow rays towards `light` the sphere
     /// `sphere` may block, on a plane whose normal is `normal`: empty where it blocks none.
+    // Out of line, with the shadow sets' set-up (`row_shadowers`, `scaled`, `product`,
+    // `quotient`): measured 3.7 % of the Cortex-M0's demo frame, whose loops they crowd in line.
+    #[inline(never)]
     pub(crate) fn shadowed_by(&self, normal: Vec3, light: Vec3, sphere: &Sphere) -> Range<usize> {
         let Some(last) = self.len.checked_sub(1) else {
             return 0..0;

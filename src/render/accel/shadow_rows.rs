@@ -38,6 +38,7 @@ const ROUNDED_DIRECTION: Fx = Fx::from_bits(2);
 /// spheres that lie too far from the row's `Π` for each of those planes. `!0` where nothing
 /// is ruled out: shadows off, no plane, or more than 32 objects (the shadow sets' limit).
 // Once a row, and a few hundred bytes of code: not copied into each caller.
+#[inline(never)]
 pub(crate) fn row_shadowers<const N: usize, const L: usize>(
     scene: &Scene<N, L>,
     eye: Vec3,
@@ -143,6 +144,7 @@ pub(crate) fn blocking_radius(radius: Fx) -> Fx {
 }
 
 /// `v.scale(s)`, out of line: once a row and light, twice.
+#[inline(never)]
 fn scaled(v: Vec3, s: Fx) -> Vec3 {
     v.scale(s)
 }
@@ -150,6 +152,7 @@ fn scaled(v: Vec3, s: Fx) -> Vec3 {
 /// `a.saturating_mul(b)`, out of line: twice a row and light. The exact product floored to
 /// Q16.16 and held within range, as `saturating_mul` forms it, by the chip's cheapest exact
 /// product (`fx::wide_mul`): on the Cortex-M0 the library's is four calls of a long routine.
+#[inline(never)]
 fn product(a: Fx, b: Fx) -> Fx {
     let floored = fx::wide_mul(a.to_bits(), b.to_bits()) >> 16;
     Fx::from_bits(floored.clamp(i32::MIN as i64, i32::MAX as i64) as i32)
@@ -157,6 +160,7 @@ fn product(a: Fx, b: Fx) -> Fx {
 
 /// `num / den` for positive `den`, rounded up, or `None` from 1 up: an angle that wide rules
 /// nothing out. Once a row and light: a plain division.
+#[inline(never)]
 fn quotient(num: Fx, den: Fx) -> Option<Fx> {
     let (num, den) = (num.to_bits(), den.to_bits());
     if num < 0 || den <= 0 || num >= den {
