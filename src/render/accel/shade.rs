@@ -49,10 +49,23 @@ impl<const N: usize, const L: usize> Scene<N, L> {
             return self.matte_pixel_within_one(material, diffuse, object.colour_at(at.point));
         }
         let light = self.local_among(object, &at, ray.dir, sets);
+        if material.reflect == Fx::ZERO && material.refraction.is_none() {
+            return rgb_of(light);
+        }
+        self.beyond(light, ray.dir, &h)
+    }
+
+    /// The pixel whose first surface `first`, met along `dir`, mirrors or refracts and has its
+    /// own light `light`: the plain path's tree of secondary rays, each hit lit as
+    /// [`Scene::local_among`] lights it.
+    // Out of line: the tree's list of waiting rays (17 of them, some 700 bytes) stays out of
+    // the row's frame, which every pixel's call goes through.
+    #[inline(never)]
+    fn beyond(&self, light: Linear, dir: Vec3, first: &SceneHit) -> Rgb {
         let local = |object: &Object, at: &Surface, view: Vec3| {
             self.local_among(object, at, view, &[!0; L])
         };
-        rgb_of(self.followed(light, ray.dir, &h, &local))
+        rgb_of(self.followed(light, dir, first, &local))
     }
 
     /// `Scene::local`: the light of `object` at `at` seen along `view`, whose shadow ray
