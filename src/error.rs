@@ -304,7 +304,7 @@ fn write_range(f: &mut fmt::Formatter<'_>, min: Fx, max: Fx) -> fmt::Result {
 
 /// As `#[derive(Debug)]` writes it, with each Q16.16 bound written to at most five decimals.
 // A variant's name and fields from one table walked by one `debug_struct`, rather than a chain
-// of calls a variant as a derive writes: the same text in a third of the code, which every
+// of calls a variant as a derive writes: the same text in much less code, which every
 // firmware that reports an error carries.
 impl fmt::Debug for Error {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
@@ -366,8 +366,8 @@ impl fmt::Debug for Error {
 
 /// A Q16.16 value written (by `Display` and `Debug` alike) to five decimals, rounded to
 /// nearest, trailing zeros dropped: as Q16.16 values lie at least 2⁻¹⁶ > 10⁻⁵ apart, no two
-/// write the same. The errors' own formatting: the `fixed` crate's formatter is several
-/// kilobytes of code on a microcontroller, which every firmware that writes an error carried.
+/// write the same. The errors' own formatting: the `fixed` crate's formatter is long code on
+/// a microcontroller, which every firmware that writes an error would carry.
 struct Decimal(Fx);
 
 impl fmt::Debug for Decimal {

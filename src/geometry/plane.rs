@@ -179,7 +179,6 @@ impl Plane {
     /// # Ok::<(), fixray::Error>(())
     /// ```
     #[must_use]
-    // Out of line: secondary rays, shadow rays and the plain path share one copy.
     pub fn intersect(&self, ray: &Ray) -> Option<Hit> {
         self.hit_from(ray, &self.numerator(ray.origin))
     }
@@ -204,8 +203,7 @@ impl Plane {
         }
     }
 
-    /// [`Plane::intersect`] given `num`, which must be `self.numerator(ray.origin)`. Out of
-    /// line: the plain path, the run loops and the shadow rays share one copy.
+    /// [`Plane::intersect`] given `num`, which must be `self.numerator(ray.origin)`.
     pub(crate) fn hit_from(&self, ray: &Ray, num: &Numerator) -> Option<Hit> {
         let square = ray.w.length_squared_wide();
         let scale = self.scale_along(num, self.normal.dot_wide_exact(ray.w))?;
@@ -279,8 +277,8 @@ const FAR_SQUARED_BITS: i32 = 2 * (FAR.to_bits().trailing_zeros() as i32);
 /// `‖s·w‖ ≤ FAR`. One
 /// reciprocal, a square and a shift: a whole row that shares `s` shares the bound. A scale
 /// with no fractional bits (`shift ≤ 0`, `s ≥ 2²⁹`) reaches nothing: it would need `‖w‖`
-/// below 2⁻¹⁶, shorter than any ray's direction. Out of line: it is rarely needed per ray
-/// (see [`within_far`]).
+/// below 2⁻¹⁶, shorter than any ray's direction. It is rarely needed per ray (see
+/// [`within_far`]).
 pub(crate) fn far_reach(scale: Scale) -> u64 {
     if scale.shift <= 0 {
         return 0;

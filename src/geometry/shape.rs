@@ -49,8 +49,7 @@ impl Shape {
 
     /// Where `ray` first meets this shape: its distance, and for a plane the whole hit, which
     /// costs no more (a plane's point is found before its distance). A sphere's hit is made
-    /// for the nearest object only, by [`Shape::sphere_hit_at`]. Out of line: the nearest-hit
-    /// loops share one copy.
+    /// for the nearest object only, by [`Shape::sphere_hit_at`].
     pub(crate) fn meet(&self, ray: &Ray) -> Option<(Fx, Option<Hit>)> {
         match self {
             Shape::Plane(plane) => {

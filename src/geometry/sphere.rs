@@ -163,9 +163,8 @@ impl Sphere {
 
     /// The `t` of [`Sphere::intersect`] alone, without the hit point and normal: what the
     /// scene needs to find the nearest object and to test shadow rays.
-    // In line (with `hit_at`) on every chip but the Cortex-M0: the calls, and the hit handed
-    // back through memory, cost a sphere pixel more than its copies cost flash. On the M0,
-    // whose flash the firmware is held to, one copy.
+    // In line, as `hit_distance_within` is: a call here would put one back in front of the
+    // sphere test.
     #[inline(always)]
     pub(crate) fn hit_distance(&self, ray: &Ray) -> Option<Fx> {
         self.hit_distance_within(ray, FAR)
@@ -176,10 +175,8 @@ impl Sphere {
     /// root `a` of at most `r²` is at most `r`, so past `t_close − r > bound` nothing is left
     /// to find. With `bound` the nearest hit found so far, a sphere behind it is left after
     /// one dot product.
-    // In line on every chip: on the Cortex-M0 too, where `hit_distance` keeps one copy for
-    // its callers and the row's nearest hit from the eye (`Scene::shoot_from_eye`) its own.
-    // In line: the sphere test of the nearest-hit loops (with `hit_distance` and `hit_at`,
-    // measured 2 to 6 % of the demo frame across the chips).
+    // In line: the sphere test of the nearest-hit loops, where a call would move their values
+    // out of the registers it clobbers.
     #[inline(always)]
     pub(crate) fn hit_distance_within(&self, ray: &Ray, bound: Fx) -> Option<Fx> {
         debug_assert!(bound <= FAR, "hit_distance_within: a bound past FAR");
@@ -297,7 +294,7 @@ impl Sphere {
     }
 
     /// The hit at distance `t` along `ray`: its point, and its normal facing the ray.
-    // In line but on the Cortex-M0, as `hit_distance` is.
+    // In line: a call would hand the hit, its point and its normal, back through memory.
     #[inline(always)]
     pub(crate) fn hit_at(&self, ray: &Ray, t: Fx) -> Hit {
         let point = ray.at_hit(t);

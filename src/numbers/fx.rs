@@ -182,9 +182,9 @@ pub(crate) const fn top_word(x: u64, p: u32) -> u32 {
 ///
 /// Found from the word that holds the leading bit: its `n` leading zeros (of 64) move `x`'s
 /// leading bit to the top of the word, and one more shift down where `n` is odd makes the
-/// length even. Two cases, against `top_word`'s three after the bit length. On the
-/// Cortex-M0, whose reciprocal root is one copy in its flash, it is the bit length and
-/// `top_word`, which measured shorter there.
+/// length even. Two cases, against `top_word`'s three after the bit length. Where a 64-bit
+/// product is a long sequence (the Cortex-M0), it is the bit length and `top_word`, which
+/// are shorter there.
 #[inline]
 #[must_use]
 pub(crate) const fn even_top_word(x: u64) -> (u32, u32) {
@@ -218,8 +218,8 @@ const fn leading_zeros_u32(x: u32) -> u32 {
 /// The number of bits `x` needs, `64 − x.leading_zeros()` (0 for 0).
 ///
 /// Cortex-M0 and RV32IMC have no count-leading-zeros instruction, and the library call that
-/// stands in for one costs about 35 instructions; two comparisons and a 256-entry table cost
-/// under a dozen. Elsewhere it is the instruction.
+/// stands in for one is long; two comparisons and a 256-entry table are far shorter.
+/// Elsewhere it is the instruction.
 #[inline]
 #[must_use]
 pub(crate) const fn bit_length(x: u64) -> u32 {

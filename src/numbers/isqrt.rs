@@ -36,6 +36,8 @@ pub const fn isqrt(x: u64) -> u64 {
 }
 
 /// [`isqrt`] for `x ≥ 2⁴⁴`: the estimate's Newton step, then whole steps.
+// Out of line: the Newton step, which no sphere test needs, stays out of every `isqrt` taken
+// in line.
 #[inline(never)]
 const fn isqrt_from_two_to_the_44(x: u64) -> u64 {
     // The root is below 2³², and so, once clamped there, is the estimate.
@@ -68,7 +70,8 @@ const fn isqrt_from_two_to_the_44(x: u64) -> u64 {
 /// [`isqrt`] for `2 ≤ x < 2⁴⁴`: its estimate, below 2²² and within 4 of the root, and its
 /// whole steps in 32-bit words: the residual `x − r²` lies within ±2³¹ (within about ±2²⁶ for
 /// the estimate's 4), so taken modulo 2³² it is exact.
-// In line in `isqrt`'s own in-line part (with `root_and_mantissa`: measured 1 to 3 %).
+// In line in `isqrt`'s in-line part, with `root_and_mantissa`: the sphere test's root,
+// taken without a call.
 #[inline(always)]
 const fn root_below_two_to_the_44(x: u64) -> u32 {
     let mut r = estimate(x) as u32;
@@ -95,6 +98,8 @@ const fn root_below_two_to_the_44(x: u64) -> u32 {
 /// (`rsqrt_unit_and_mantissa`): a call would move the sphere test's values out of the registers it
 /// clobbers, and the mantissa need not be found again (on the Cortex-M0 and RV32, which have
 /// no count-leading-zeros instruction, a second bit length).
+// In line, as the sphere test's root is: a call would move the test's values out of the
+// registers it clobbers.
 #[inline(always)]
 const fn root_and_mantissa(x: u64) -> (u32, u32, u32) {
     if x < 1 << 44 {

@@ -77,9 +77,6 @@ const fn knots_from(byte: usize) -> (u32, u32, u32) {
 /// `s` is scaled by an even power of two into `μ ∈ [¼, 1)`, a 32-bit mantissa `m` in Q0.32,
 /// and `1/√μ` is interpolated quadratically between three knots of a table of 194, in 32-bit
 /// products: no Newton step. `y` lies in `(2³⁰, 2³¹)`.
-// In line on the Armv7-M cores, where the bit length is one instruction and the whole is
-// short; out of line on ARMv6-M and RV32, where it is not, and one copy serves every ray and
-// light direction within the flash the firmware is held to.
 #[must_use]
 pub(crate) const fn rsqrt_unit(s: u64) -> (u32, u32) {
     let (y, half, _) = rsqrt_unit_and_mantissa(s);
@@ -90,11 +87,9 @@ pub(crate) const fn rsqrt_unit(s: u64) -> (u32, u32) {
 /// top 32 bits at an even bit length, `μ` in Q0.32): for the few callers that take a root a
 /// pixel with many values live (a light's direction, the sphere test's integer root, whose
 /// estimate multiplies the root by that mantissa), where a call would move those values out
-/// of the registers it clobbers. Each caller says on which chips it takes it; a floor's
-/// columns take it through [`rsqrt_unit_near`].
+/// of the registers it clobbers. A floor's columns take it through [`rsqrt_unit_near`].
 // In line: a light's direction at each lit pixel and a sphere test's root take it, where a
-// call would move their values out of the registers it clobbers (with `rsqrt_unit_near`:
-// measured 2 % of the Cortex-M0's and RV32's demo frames).
+// call would move their values out of the registers it clobbers.
 #[inline(always)]
 #[must_use]
 pub(crate) const fn rsqrt_unit_and_mantissa(s: u64) -> (u32, u32, u32) {
@@ -107,6 +102,8 @@ pub(crate) const fn rsqrt_unit_and_mantissa(s: u64) -> (u32, u32, u32) {
 
 /// [`rsqrt_unit_and_mantissa`] for one of a run of arguments that mostly share their even bit
 /// length, which `length` keeps from one to the next ([`EvenLength`]): the same values.
+// In line: a floor's cosine at each column of a lit stretch takes it, where a call would
+// move the loop's values out of the registers it clobbers.
 #[inline(always)]
 #[must_use]
 pub(crate) fn rsqrt_unit_near(s: u64, length: &mut EvenLength) -> (u32, u32) {
@@ -132,9 +129,9 @@ pub(super) const fn interpolated(m: u32) -> u32 {
 /// squared distances to a light, column after column, mostly share it. An argument `s` has it
 /// exactly when its high word lies in `[2^(p−34), 2^(p−32))`, one comparison, and its mantissa
 /// `s >> (p − 32)` is then two shifts of its words: where the chip counts no leading zeros,
-/// that is about twenty instructions fewer than finding the length afresh. The bounds and
-/// shifts are kept beside the half length rather than derived from it, so that a column whose
-/// square has the kept length takes no arithmetic for them.
+/// that is far shorter than finding the length afresh. The bounds and shifts are kept beside
+/// the half length rather than derived from it, so that a column whose square has the kept
+/// length takes no arithmetic for them.
 #[derive(Clone, Copy)]
 pub(crate) struct EvenLength {
     /// `2^(p−34)` and `3·2^(p−34)`: `high − base < span` holds for the length's high words.
@@ -159,8 +156,8 @@ impl EvenLength {
     /// [`fx::even_top_word`]`(x)` for `x ≥ 1`, through the kept length where `x` has it, and
     /// keeping `x`'s otherwise.
     pub(crate) fn even_top_word(&mut self, x: u64) -> (u32, u32) {
-        // Where the leading zeros are one instruction, finding the length measured shorter
-        // than keeping it.
+        // Where the leading zeros are one instruction, finding the length is shorter than
+        // keeping it.
         if !fx::NO_CLZ {
             return fx::even_top_word(x);
         }
@@ -229,7 +226,6 @@ const RECIPROCAL_KNOTS: [u32; 129] = {
 /// `den` is scaled into `δ ∈ [½, 1)`, and `y ∈ [2³⁰, 2³¹]` is `1/δ` in Q2.30 to about 2⁻²⁹.
 /// Newton's step for a reciprocal approaches it from below, but the step's truncated product
 /// `δ·y` can leave `y` up to 3 units above it (a test holds it below 4).
-// Out of line: a division and the bound on FAR share it, in every loop that meets planes.
 pub(crate) fn inverse(den: u64) -> (u32, u32) {
     let den_bits = bit_length(den); // den < 2^den_bits
     let d = top_word(den, den_bits);

@@ -242,8 +242,8 @@ impl Vec3 {
     /// points within `LIMIT`). Where a 64-bit product is a long sequence, from the split
     /// products of [`Vec3::dot_exact`], the same value: the dot product then lies within
     /// 3·2²⁹ raw, and fits.
-    // In line, with the normalisation's parts (`normalize_by`, `unit_component_near`,
-    // `unit_factor`): measured 2 to 4 % of the demo frame on the Cortex-M0, M3 and M4F.
+    // In line: a highlight's cosine and a mirror ray's direction take it at each pixel that
+    // has one, where a call would move their values out of the registers it clobbers.
     #[inline(always)]
     pub(crate) const fn dot_units(self, o: Vec3) -> Fx {
         self.dot_by::<{ fx::NO_LONG_MULTIPLY }>(o)
@@ -317,8 +317,6 @@ impl Vec3 {
     }
 
     /// ‖self‖, truncated to Q16.16: `isqrt` of the exact Q32.32 square.
-    // Out of line: only set-up, row and shadow-set code takes a length, none a pixel, and
-    // it is long on chips without 64-bit multiplication.
     #[must_use]
     pub const fn length(self) -> Fx {
         let root = isqrt(self.length_squared_wide());
@@ -364,6 +362,8 @@ impl Vec3 {
     }
 
     /// [`Vec3::normalize_with_square`]'s work.
+    // In line: a ray's and a light's direction are normalised at each pixel, where a call
+    // would move the caller's values out of the registers it clobbers.
     #[inline(always)]
     const fn normalize_by(self, square: u64) -> Option<Vec3> {
         debug_assert!(
@@ -394,6 +394,8 @@ impl Vec3 {
     /// [`Vec3::unit_component_with_square`] with the reciprocal root in line, for a loop that
     /// takes one a column, whose squares mostly share their even bit length: kept from one to
     /// the next in `length` ([`rsqrt_unit_near`]).
+    // In line: a floor's cosine at each column of a lit stretch, where a call would move the
+    // loop's values out of the registers it clobbers.
     #[inline(always)]
     pub(crate) fn unit_component_near(c: Fx, square: u64, length: &mut EvenLength) -> Option<Fx> {
         if square == 0 {
@@ -424,6 +426,7 @@ const fn unit_scale(square: u64) -> Option<(u32, u32)> {
 
 /// [`unit_scale`]'s factor and shift from a reciprocal root `1/√s ≈ y · 2^−(30 + half)` of the
 /// squared length `s`: `1/‖v‖` in units of 2⁻¹⁶ is `y · 2^−(30 + half) · 2¹⁶`.
+// In line: one addition, which a call would cost several times over.
 #[inline(always)]
 const fn unit_factor(y: u32, half: u32) -> (u32, u32) {
     (y, 14 + half)
@@ -608,7 +611,7 @@ mod tests {
             );
             let square = v.length_squared_wide();
             let unit = v.normalize_with_square(square);
-            // In line or called, the root is the same.
+            // Taken again, the root is the same.
             assert_eq!(v.normalize_with_square(square), unit, "{v:?}");
             for (c, u) in [
                 (v.x, unit.map(|u| u.x)),

@@ -41,9 +41,7 @@ impl Background {
     }
 
     /// [`Background::along`] for a direction whose `y` is `height`: all a gradient reads.
-    // Out of line on ARMv6-M and RV32, whose flash the firmware is held to: one copy for the
-    // rays that miss. In line on the Armv7-M cores, where the call costs the frames more than
-    // the copies cost flash. (A run of sky blends with a `Blend` of its own.)
+    // A run of sky blends with a `Blend` of its own.
     pub(crate) fn along_height(&self, height: Fx) -> Linear {
         if let Some(c) = self.plain_colour() {
             // Nothing to blend.
@@ -76,7 +74,6 @@ impl Blend {
     }
 
     /// The colour seen along a direction whose `y` is `height` (see [`Background::along`]).
-    // In line in a run of sky's loop, on every chip.
     pub(crate) fn at(&self, height: Fx) -> Linear {
         const MOST: Fx = Fx::from_bits((1 << 16) + 1);
         // 0 straight down, 1 straight up: within −2⁻¹⁶..=1, whatever the direction is.

@@ -29,9 +29,8 @@ pub(crate) const fn linear_to_channel(x: Fx) -> u8 {
     }
 }
 
-/// An [`Rgb`] from summed channels. Out of line: every loop that sums light keeps one copy
-/// between them. (A surface whose light is the pixel by itself skips the sum:
-/// `Scene::matte_pixel`.)
+/// An [`Rgb`] from summed channels. (A surface whose light is the pixel by itself skips the
+/// sum: `Scene::matte_pixel`.)
 pub(crate) fn rgb_of(c: Linear) -> Rgb {
     Rgb::new(
         linear_to_channel(c[0]),

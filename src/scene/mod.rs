@@ -50,8 +50,8 @@ impl Object {
         }
     }
 
-    /// [`Object::colour_at`] for a material with a checkerboard: out of line, since the plain
-    /// colour is the common case and every pixel's shading asks for one or the other.
+    /// [`Object::colour_at`] for a material with a checkerboard: a function of its own, since
+    /// the plain colour is the common case and every pixel's shading asks for one or the other.
     fn checkered_at(&self, point: Vec3) -> Rgb {
         match (self.material.checker, self.shape) {
             (Some(checker), Shape::Plane(plane)) => {

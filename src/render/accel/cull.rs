@@ -70,9 +70,6 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// every plane ([`Eye`]'s `before_planes`) is nearer than any plane's, and then the planes
     /// need no test. A sphere whose near side lies beyond the nearest hit found so far takes
     /// one dot product ([`Sphere::hit_distance_within`]).
-    // In line on every chip: its one caller is the row's walk, where on the Cortex-M0 too
-    // (whose flash the firmware is held to) the copy comes out shorter than a function of
-    // its own and the call.
     #[inline]
     pub(crate) fn shoot_from_eye(&self, ray: &Ray, among: u64, eye: &Eye<N>) -> Option<SceneHit> {
         let order = [among & !eye.planes, among & eye.planes];
@@ -197,7 +194,7 @@ impl<const N: usize> Eye<N> {
 
 /// The spheres among the objects `others` of `scene` that lie wholly before each of its
 /// planes `planes` (bit `i` for object `i`), seen from `eye` ([`before_plane`]); none in
-/// scenes of more than 64 objects. Once a row, and out of line.
+/// scenes of more than 64 objects. Once a row.
 fn spheres_before_planes<const N: usize, const L: usize>(
     scene: &Scene<N, L>,
     planes: u64,

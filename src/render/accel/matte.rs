@@ -49,7 +49,6 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// [`Scene::trace`] gives them for the camera's rays: where the plane is met, its matte
     /// light, whose shadow rays towards light `i` try only the objects of
     /// `plane_shadowers[i]` (see `accel/shadow_rows.rs`); elsewhere the background.
-    // Out of line: the loop of most floor pixels, kept whole and in one place.
     pub(crate) fn shade_matte_run(
         &self,
         camera: &Camera,
@@ -156,7 +155,6 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// `plane`, shaded by `shade`, or the background where the plane is not met. Started at
     /// any column, it meets the same values as a walk from the run's start: the steps are
     /// exact.
-    // Out of line: one copy, however many stretches a run has.
     fn matte_loop(
         &self,
         camera: &Camera,
@@ -203,7 +201,6 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// [`Scene::matte_loop`]'s pixels, without its reach test or ray, and with each light's
     /// cosine alone ([`Axis`]). Its own loop, which keeps the values the columns share in
     /// registers.
-    // Out of line: one copy for every stretch.
     fn lit_stretch(
         &self,
         camera: &Camera,
@@ -276,8 +273,8 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     }
 
     /// What the camera's ray along `start` plus `k` column steps, whose squared length is
-    /// `square`, sees of a background that is not plain: out of line, since most backgrounds
-    /// are, and from the stretch's start, so that the loop need not carry the direction.
+    /// `square`, sees of a background that is not plain: cold, since most backgrounds are
+    /// plain, and from the stretch's start, so that the loop need not carry the direction.
     #[cold]
     fn background_along(&self, camera: &Camera, start: Vec3, k: usize, square: u64) -> Rgb {
         let towards = match k {
@@ -389,8 +386,6 @@ struct Offsets {
     step_remainder: [u64; 3],
 }
 
-// The set-up out of line on RV32, where its 64-bit shifts are long sequences which a stretch
-// makes once; the step in line on every chip, in each loop that walks a stretch.
 impl Offsets {
     fn new(scale: Scale, start: Vec3, step: Vec3) -> Self {
         // Past 63 every offset rounds to 0, and stays there (`offset` says why).
@@ -449,8 +444,7 @@ impl Offsets {
 }
 
 /// `v`'s quotient by `2^shift`, floored (its low 32 bits), and its remainder, moved to the top
-/// of a word, for `shift` in 1..64. Out of line on RV32, where its two shifts are long
-/// sequences that six values a stretch can share.
+/// of a word, for `shift` in 1..64.
 fn split(v: i64, shift: u32) -> (i32, u64) {
     ((v >> shift) as i32, (v as u64) << (64 - shift))
 }

@@ -123,7 +123,6 @@ pub(crate) struct RowSquares {
 impl RowSquares {
     /// Starting at `start` (`w`) and stepping by `step` (`r`); both within the camera's
     /// bounds (components below 2¹⁵), so each product and sum fits 64 bits.
-    // Out of line: once a run, and long where 64-bit products are library calls.
     pub(crate) fn new(start: Vec3, step: Vec3) -> Self {
         let r2 = step.length_squared_wide() as i64;
         RowSquares {

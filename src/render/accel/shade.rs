@@ -58,8 +58,9 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// The pixel whose first surface `first`, met along `dir`, mirrors or refracts and has its
     /// own light `light`: the plain path's tree of secondary rays, each hit lit as
     /// [`Scene::local_among`] lights it.
-    // Out of line: the tree's list of waiting rays (17 of them, some 700 bytes) stays out of
-    // the row's frame, which every pixel's call goes through.
+    // Out of line: the tree's list of waiting rays (17 of them) stays off the row's stack
+    // frame, which every pixel's call goes through, and takes stack only while a mirror or
+    // glass pixel is followed.
     #[inline(never)]
     fn beyond(&self, light: Linear, dir: Vec3, first: &SceneHit) -> Rgb {
         let local = |object: &Object, at: &Surface, view: Vec3| {
@@ -91,8 +92,8 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// [`Scene::reaches`] for light `light_index` (`light`), whose shadow ray tries only the
     /// objects of `among` (see [`Scene::occluded_among`]), and none where `among` is `None`
     /// (shadows off, or nothing that can block it).
-    // Out of line: every lit pixel's light, for the first surface and the matte runs alike
-    // (with `matte_pixel_within_one` in line: measured 1 to 3 %).
+    // Out of line: every lit pixel's light goes through it, for the first surface and the
+    // matte runs alike, and in line it crowds their loops.
     #[inline(never)]
     pub(crate) fn reaches_among(
         &self,
@@ -182,6 +183,8 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// [`Scene::matte_pixel`] for the loops of matte pixels: up to a brightness of 1, the
     /// common case, no channel passes 255 (255·2¹⁶ + 2¹⁵ is below 256·2¹⁶), so there is
     /// nothing to hold.
+    // In line: the last step of every matte pixel, in the loops of matte runs, where a call
+    // would move the loop's values out of the registers it clobbers.
     #[inline(always)]
     pub(crate) fn matte_pixel_within_one(
         &self,

@@ -53,7 +53,7 @@ impl RunLine {
     /// The columns (indices into the run) whose hits' shadow rays towards `light` the sphere
     /// `sphere` may block, on a plane whose normal is `normal`: empty where it blocks none.
     // Out of line, with the shadow sets' set-up (`row_shadowers`, `scaled`, `product`,
-    // `quotient`): measured 3.7 % of the Cortex-M0's demo frame, whose loops they crowd in line.
+    // `quotient`): once a run and sphere, and in line it crowds the row's pixel loops.
     #[inline(never)]
     pub(crate) fn shadowed_by(&self, normal: Vec3, light: Vec3, sphere: &Sphere) -> Range<usize> {
         let Some(last) = self.len.checked_sub(1) else {
@@ -82,7 +82,7 @@ impl RunLine {
         // The farthest a hit lies from the light: at most the farther end's exact distance
         // (convexity), which `length` truncates by under a unit and the ends' and the
         // column's roundings move by under a unit each. (Taken again over the columns found,
-        // it narrows them, but measured slower than what it spares.)
+        // it narrows them, but costs more than it spares.)
         let far = start.length().max(end.length()).to_bits() as i64 + 3;
         let bound = ((rho.to_bits() as i64 * far + slack) >> COARSE) + 2;
         let Some((lo, hi)) = solve(side(start), side(end), last as i64, bound) else {
@@ -112,8 +112,8 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     ) -> Range<usize> {
         // Each sphere costs two lengths and a division a light: past three (several lights
         // over several spheres, as in the classic scene), or on a short run (an animation's
-        // redrawn region), the columns they left out measured fewer than they cost, and the
-        // run is taken whole.
+        // redrawn region), the columns they leave out spare less than they cost, and the run
+        // is taken whole.
         let mut tried = 0;
         for (i, set) in sets.iter().enumerate() {
             let Some(among) = *set else { continue };

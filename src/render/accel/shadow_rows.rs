@@ -37,7 +37,8 @@ const ROUNDED_DIRECTION: Fx = Fx::from_bits(2);
 /// `eye` has the unit normal `row_normal` (`Camera::row_plane_normal`): every object but the
 /// spheres that lie too far from the row's `Π` for each of those planes. `!0` where nothing
 /// is ruled out: shadows off, no plane, or more than 32 objects (the shadow sets' limit).
-// Once a row, and a few hundred bytes of code: not copied into each caller.
+// Out of line, with the rest of the shadow sets' set-up (`scaled`, `product`, `quotient`,
+// `RunLine::shadowed_by`): it runs once a row, and in line it crowds the row's pixel loops.
 #[inline(never)]
 pub(crate) fn row_shadowers<const N: usize, const L: usize>(
     scene: &Scene<N, L>,
@@ -143,15 +144,17 @@ pub(crate) fn blocking_radius(radius: Fx) -> Fx {
     radius + ((radius + Fx::ONE) >> 6) + Fx::from_bits(1 << 8) + ((FAR + radius) >> 15)
 }
 
-/// `v.scale(s)`, out of line: once a row and light, twice.
+/// `v.scale(s)`: once a row and light, twice.
+// Out of line, as `row_shadowers` is: set-up that in line crowds the row's pixel loops.
 #[inline(never)]
 fn scaled(v: Vec3, s: Fx) -> Vec3 {
     v.scale(s)
 }
 
-/// `a.saturating_mul(b)`, out of line: twice a row and light. The exact product floored to
-/// Q16.16 and held within range, as `saturating_mul` forms it, by the chip's cheapest exact
-/// product (`fx::wide_mul`): on the Cortex-M0 the library's is four calls of a long routine.
+/// `a.saturating_mul(b)`: twice a row and light. The exact product floored to Q16.16 and held
+/// within range, as `saturating_mul` forms it, by the chip's cheapest exact product
+/// (`fx::wide_mul`): on the Cortex-M0 the library's is four calls of a long routine.
+// Out of line, as `row_shadowers` is: set-up that in line crowds the row's pixel loops.
 #[inline(never)]
 fn product(a: Fx, b: Fx) -> Fx {
     let floored = fx::wide_mul(a.to_bits(), b.to_bits()) >> 16;
@@ -160,6 +163,7 @@ fn product(a: Fx, b: Fx) -> Fx {
 
 /// `num / den` for positive `den`, rounded up, or `None` from 1 up: an angle that wide rules
 /// nothing out. Once a row and light: a plain division.
+// Out of line, as `row_shadowers` is: set-up that in line crowds the row's pixel loops.
 #[inline(never)]
 fn quotient(num: Fx, den: Fx) -> Option<Fx> {
     let (num, den) = (num.to_bits(), den.to_bits());

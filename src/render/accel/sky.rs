@@ -19,7 +19,6 @@ use crate::scene::linear::rgb_of;
 impl<const N: usize, const L: usize> Scene<N, L> {
     /// The background's pixels for a run of columns of display row `row` that can meet
     /// nothing, from column `first`, one for each pixel of `out`.
-    // Out of line: the loop of every run of sky under a gradient.
     pub(crate) fn paint_sky(&self, camera: &Camera, row: u16, first: u16, out: &mut [Rgb]) {
         let step = camera.column_step();
         // Where a run's walk along the row starts (`Camera::row_start`).

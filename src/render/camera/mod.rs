@@ -208,9 +208,6 @@ fn check_budget(view: Fx, aspect: Fx, cols: u16, rows: u16) -> Result<(), Error>
 /// `i`, each turn a shift and an add, and the turns add up to its angle. Scaled to a top bit
 /// of 2⁶⁰, the vector grows by the rotations' gain (1.65) to below 2⁶³; after 40 steps the
 /// angle is good to about 10⁻⁶ millidegrees.
-///
-/// Out of line: inlined into [`check_budget`] it took about 230 bytes more flash on a
-/// Cortex-M0, on a path only a refused camera takes.
 fn doubled_angle(atan_x: u64, atan_y: u64) -> u64 {
     /// atan(2⁻ⁱ) as a doubled angle in 2⁻³² millidegrees, rounded: `atan(2⁻ⁱ)·(360 000/π)·2³²`.
     const TURNS: [i64; 16] = [
@@ -282,7 +279,6 @@ fn view_of_fov(fov_y_degrees: f32, rows: u16) -> Fx {
 /// a few steps in all, each one tangent, on a path only a refused camera takes. Each way
 /// takes at most 64 steps (no screen comes near); should none inwards be accepted, the named
 /// value is left.
-// Out of line, as `doubled_angle` is: only a refused camera comes here.
 fn accepted_limit(error: Error, aspect: Fx, cols: u16, rows: u16) -> Error {
     let accepts = |millidegrees: u32| {
         let fov = millidegrees as f32 / 1000.0;
@@ -321,9 +317,8 @@ fn accepted_limit(error: Error, aspect: Fx, cols: u16, rows: u16) -> Error {
     }
 }
 
-/// `v`'s unit vector ([`Vec3::try_normalize`]), out of line: the look-at set-up normalises
-/// three vectors, and one copy of the code serves all three. Inlined into a firmware's set-up
-/// they took about 470 bytes more flash on a Cortex-M4F.
+/// `v`'s unit vector ([`Vec3::try_normalize`]), for the three vectors the look-at set-up
+/// normalises.
 fn unit(v: Vec3) -> Option<Vec3> {
     v.try_normalize()
 }
@@ -465,8 +460,7 @@ impl Camera {
         let unit_up = unit(up).ok_or(Error::DegenerateCamera(CameraProblem::UpIsZero))?;
         // Unit vectors closer than about 0.2° to parallel do not define a picture's up: a
         // length below 2⁻⁸. Compared as the exact square (below 2⁻¹⁶), which is the same test
-        // since `length` is the floor of the root, without an inlined square root (about
-        // 360 bytes of flash on a Cortex-M4F).
+        // since `length` is the floor of the root, and needs no square root.
         if forward.cross(unit_up).length_squared_wide() < 1 << (2 * (FRAC - 8)) {
             return Err(Error::DegenerateCamera(CameraProblem::UpAlongView));
         }
@@ -775,7 +769,6 @@ impl Camera {
     /// rounding of the frame, of the rays and of the hit tests (each about 2⁻¹⁶ of the
     /// distance), and by 2⁻⁷ for the sums' own units; one column each side covers the slopes'
     /// rounding and the half column of `cols/2`.
-    // Out of line: once a row for each sphere near it, and not short.
     pub(crate) fn column_span(&self, centre: Vec3, radius: Fx) -> Option<(i16, i16)> {
         let to_centre = centre - self.eye;
         let view = self.forward.try_normalize()?;
