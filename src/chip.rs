@@ -20,9 +20,9 @@ pub(crate) const NO_CLZ: bool = cfg!(any(
     all(fixray_chip = "riscv32", not(target_feature = "zbb"))
 ));
 
-/// Chips where a 64-bit shift by a variable amount is a library call (ARMv6-M) or a branching
-/// sequence (RV32): there a rounded shift goes by 32-bit words.
-pub(crate) const WORD_SHIFTS: bool = cfg!(any(fixray_chip = "armv6m", fixray_chip = "riscv32"));
+/// ARMv6-M, where a 64-bit shift by a variable amount is a library call: there a rounded shift
+/// goes by 32-bit words.
+pub(crate) const WORD_SHIFTS: bool = cfg!(fixray_chip = "armv6m");
 
 #[cfg(test)]
 mod tests {
@@ -47,6 +47,6 @@ mod tests {
             assert_eq!(FAMILY, want);
         }
         assert_eq!(super::NO_LONG_MULTIPLY, FAMILY == "armv6m");
-        assert_eq!(super::WORD_SHIFTS, matches!(FAMILY, "armv6m" | "riscv32"));
+        assert_eq!(super::WORD_SHIFTS, FAMILY == "armv6m");
     }
 }

@@ -32,9 +32,6 @@ pub struct Sphere {
     /// multiplication by it instead of three divisions.
     inv_radius: i32,
     inv_shift: u32,
-    /// `r²` in Q32.32, high and low words: every ray test compares with it. Two words, so
-    /// that a sphere keeps the alignment of its other fields on 32-bit chips.
-    radius_squared: [u32; 2],
 }
 
 impl Sphere {
@@ -93,19 +90,12 @@ impl Sphere {
                 inv as i32
             },
             inv_shift: k,
-            radius_squared: [((r * r) >> 32) as u32, (r * r) as u32],
         })
     }
 
-    /// `r²` in Q32.32, exactly: kept where a 64-bit product is a long sequence, formed where
-    /// it is a single instruction, which costs less than loading two words.
+    /// `r²` in Q32.32, exactly: every ray test compares with it.
     const fn radius_squared(&self) -> u64 {
-        if fx::NO_LONG_MULTIPLY {
-            let [high, low] = self.radius_squared;
-            ((high as u64) << 32) | low as u64
-        } else {
-            fx::wide_mul(self.radius.to_bits(), self.radius.to_bits()) as u64
-        }
+        fx::wide_mul(self.radius.to_bits(), self.radius.to_bits()) as u64
     }
 
     /// The unit sphere at the origin.
@@ -209,26 +199,21 @@ impl Sphere {
 
     /// Whether `ray` meets the sphere nearer than `√distance_squared` (a Q32.32 value):
     /// exactly `hit_distance(ray).is_some_and(|t| t² < distance_squared)`, a shadow ray's
-    /// question. Where a 64-bit product is one instruction, without the square root when the
-    /// answer does not need it: when the closest approach lies more than a radius (and
-    /// [`SURELY_OUTSIDE`]) ahead of the origin and within [`FAR`], a hit is at `t_close − a`
-    /// with `0 ≤ a ≤ r` (`a` is a root of at most `r²`), so every hit is near enough if
-    /// `t_close` is, and none if `t_close − r` is not. On the Cortex-M0, whose flash the
-    /// firmware is held to, this second copy of the test's start costs more than it saves:
-    /// there it takes the square root.
+    /// question. Without the square root where the answer does not need it: when the closest
+    /// approach lies more than a radius (and [`SURELY_OUTSIDE`]) ahead of the origin and
+    /// within [`FAR`], a hit is at `t_close − a` with `0 ≤ a ≤ r` (`a` is a root of at most
+    /// `r²`), so every hit is near enough if `t_close` is, and none if `t_close − r` is not.
     pub(crate) fn blocks(&self, ray: &Ray, distance_squared: u64) -> bool {
         let square = |t: Fx| fx::wide_mul_u32(t.to_bits() as u32, t.to_bits() as u32);
-        if !fx::NO_LONG_MULTIPLY {
-            let to_centre = self.centre.minus(ray.origin);
-            let t_close = ray.dir.dot_exact(to_centre);
-            let nearest = t_close - self.radius;
-            if nearest >= SURELY_OUTSIDE && t_close <= FAR {
-                if square(nearest) >= distance_squared {
-                    return false;
-                }
-                if square(t_close) < distance_squared {
-                    return closest_squared(ray, to_centre, t_close) <= self.radius_squared();
-                }
+        let to_centre = self.centre.minus(ray.origin);
+        let t_close = ray.dir.dot_exact(to_centre);
+        let nearest = t_close - self.radius;
+        if nearest >= SURELY_OUTSIDE && t_close <= FAR {
+            if square(nearest) >= distance_squared {
+                return false;
+            }
+            if square(t_close) < distance_squared {
+                return closest_squared(ray, to_centre, t_close) <= self.radius_squared();
             }
         }
         self.hit_distance(ray)

@@ -182,17 +182,11 @@ pub(crate) const fn top_word(x: u64, p: u32) -> u32 {
 ///
 /// Found from the word that holds the leading bit: its `n` leading zeros (of 64) move `x`'s
 /// leading bit to the top of the word, and one more shift down where `n` is odd makes the
-/// length even. Two cases, against `top_word`'s three after the bit length. Where a 64-bit
-/// product is a long sequence (the Cortex-M0), it is the bit length and `top_word`, which
-/// are shorter there.
+/// length even. Two cases, against `top_word`'s three after the bit length.
 #[inline]
 #[must_use]
 pub(crate) const fn even_top_word(x: u64) -> (u32, u32) {
     debug_assert!(x >= 1, "even_top_word: zero");
-    if NO_LONG_MULTIPLY {
-        let p = (bit_length(x) + 1) & !1;
-        return (top_word(x, p), p / 2);
-    }
     let (high, low) = ((x >> 32) as u32, x as u32);
     let (top, n) = if high != 0 {
         let n = leading_zeros_u32(high);

@@ -172,8 +172,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         } = walk;
         let mut square = RowSquares::new(towards, step);
         let mut offsets = Offsets::new(scale, towards, step);
-        let start = towards;
-        for (k, pixel) in out.iter_mut().enumerate() {
+        for pixel in out.iter_mut() {
             let hit = if square.now(towards) <= reach {
                 plane.bounded_at(eye.plus(offsets.now()))
             } else {
@@ -183,12 +182,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
                 (Some(point), _) => shade(point),
                 // A plain sky's colour, which `Background::along` gives whatever the ray.
                 (None, Some(sky)) => sky,
-                // Where the squares are carried (`RowSquares::now`), the direction is needed
-                // nowhere else: found from the stretch's start here, it is not carried at all.
-                (None, None) if fx::NO_LONG_MULTIPLY => {
-                    self.background_along(camera, start, k, square.now(towards))
-                }
-                (None, None) => self.background_along(camera, towards, 0, square.now(towards)),
+                (None, None) => self.background_along(camera, towards, square.now(towards)),
             };
             towards = towards.plus(step);
             square.step();
@@ -267,20 +261,15 @@ impl<const N: usize, const L: usize> Scene<N, L> {
             Some(sky) => sky,
             None => {
                 let towards = start.plus(camera.column_step().steps(k as i32));
-                self.background_along(camera, towards, 0, towards.length_squared_wide())
+                self.background_along(camera, towards, towards.length_squared_wide())
             }
         }
     }
 
-    /// What the camera's ray along `start` plus `k` column steps, whose squared length is
-    /// `square`, sees of a background that is not plain: cold, since most backgrounds are
-    /// plain, and from the stretch's start, so that the loop need not carry the direction.
+    /// What the camera's ray along `towards`, whose squared length is `square`, sees of a
+    /// background that is not plain: cold, since most backgrounds are plain.
     #[cold]
-    fn background_along(&self, camera: &Camera, start: Vec3, k: usize, square: u64) -> Rgb {
-        let towards = match k {
-            0 => start,
-            _ => start.plus(camera.column_step().steps(k as i32)),
-        };
+    fn background_along(&self, camera: &Camera, towards: Vec3, square: u64) -> Rgb {
         let ray = camera.ray_along(towards, square);
         rgb_of(self.background().along(ray.dir))
     }
@@ -462,33 +451,6 @@ mod tests {
         }
         let q = (w as i128 * m as i128 + (1i128 << (shift - 1))) >> shift;
         q as i32
-    }
-
-    #[test]
-    fn a_stretchs_background_from_its_start_is_the_one_along_each_columns_direction() {
-        // The Cortex-M0 finds a column's direction from the stretch's start; the others pass it.
-        let scene = crate::demo::classic();
-        // Tilted and rolled, so that the column step has all three components.
-        let camera = Camera::look_at([0.0, 0.0, 0.0], [0.7, 0.4, -1.0])
-            .up([0.3, 1.0, 0.2])
-            .fov_degrees(70.0)
-            .size(crate::Size::new(97, 61))
-            .build()
-            .unwrap();
-        let step = camera.column_step();
-        assert!([step.x, step.y, step.z].iter().all(|&c| c != Fx::ZERO));
-        for row in [0, 7, 30, 60] {
-            let start = camera.row_start(row);
-            for k in [1, 2, 48, 96] {
-                let towards = start.plus(step.steps(k as i32));
-                let square = towards.length_squared_wide();
-                assert_eq!(
-                    scene.background_along(&camera, start, k, square),
-                    scene.background_along(&camera, towards, 0, square),
-                    "row {row}, column {k}"
-                );
-            }
-        }
     }
 
     #[test]
