@@ -4,7 +4,8 @@
 # renderer and scene:
 #
 #   target, renderer (with the scene: `fixed`, `fixed-classic`, `reference-f32`, ...),
-#   hash (match / MISMATCH), instructions per frame and per pixel, flash bytes, RAM bytes
+#   hash (match / MISMATCH), instructions per frame and per pixel, flash bytes, the bytes of
+#   fixray's own code and data in it (scripts/own_code.py), RAM bytes
 #   (static RAM + peak stack, also shown apart).
 #
 # Each row is one of the firmware's binaries, which renders one scene with one renderer:
@@ -197,8 +198,8 @@ run_firmware() { # target, bin: runs one firmware under QEMU into $log; its exit
         --config "$(remap "$1")" --bin "$2" 9>&-) \
         >"$log" 2>&1 || status=$?
 }
-row() { printf '%-28s %-24s %-8s %12s %9s %7s %7s %7s %7s\n' "$@"; }
-row target renderer hash instr/frame instr/px flash ram static stack
+row() { printf '%-28s %-24s %-8s %12s %9s %7s %7s %7s %7s %7s\n' "$@"; }
+row target renderer hash instr/frame instr/px flash fixray ram static stack
 for target in "${targets[@]}"; do
     for bin in "${bins[@]}"; do
         log="$logs/$target-$bin.txt"
@@ -208,7 +209,7 @@ for target in "${targets[@]}"; do
         memory=$(line memory:)
         hash=$(field hash "$frame")
         if ((status != 0)) || [[ -z $hash || -z $memory ]]; then
-            row "$target" "${renderer:-$bin}" "FAILED" "exit $status" - - - - -
+            row "$target" "${renderer:-$bin}" "FAILED" "exit $status" - - - - - -
             sed 's/^/    /' "$log" | tail -n 5 >&2
             failed=1
             continue
@@ -219,8 +220,9 @@ for target in "${targets[@]}"; do
         [[ $verdict == match ]] || failed=1
         static=$(field static_ram "$memory")
         stack=$(field peak_stack "$memory")
+        own=$(python3 "$root/scripts/own_code.py" "$firmware/target/$target/release/$bin" || echo -)
         row "$target" "$renderer" "$verdict" "$(field instructions "$frame")" \
-            "$(field per_pixel "$frame")" "$(field flash "$memory")" $((static + stack)) \
+            "$(field per_pixel "$frame")" "$(field flash "$memory")" "$own" $((static + stack)) \
             "$static" "$stack"
         per_pixel_of["$target $renderer"]=$(field per_pixel "$frame")
         flash_of["$target $renderer"]=$(field flash "$memory")
@@ -304,7 +306,8 @@ for renderer in "${names[@]}" draw-demo draw-classic animate-spans animate-final
 done
 echo "instruction counters (QEMU -icount shift=0), each checked by a loop of known length:"
 printf '  %s\n' "${calibrations[@]}"
-echo "ram = static RAM + peak stack, in bytes; instructions count the render_row calls only."
+echo "ram = static RAM + peak stack, in bytes; fixray = the bytes of the ELF's symbols that are fixray's own (scripts/own_code.py);"
+echo "instructions count the render_row calls only."
 echo "built with $(rustc --version), run on $(qemu-system-arm --version | head -n 1)"
 
 # --- The README's tables -------------------------------------------------------------------
