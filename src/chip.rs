@@ -20,6 +20,11 @@ pub(crate) const NO_CLZ: bool = cfg!(any(
     all(fixray_chip = "riscv32", not(target_feature = "zbb"))
 ));
 
+/// The Armv7-M cores, whose 32 × 32 → 64-bit multiply gives the product's high word in one
+/// instruction: there a rounded quotient of a product by `2^shift`, `shift ≥ 33`, is taken from
+/// the high word alone, and a smaller shift is moved up to 33 where the operand allows.
+pub(crate) const HIGH_WORD_QUOTIENT: bool = cfg!(fixray_chip = "armv7m");
+
 /// ARMv6-M, where a 64-bit shift by a variable amount is a library call: there a rounded shift
 /// goes by 32-bit words.
 pub(crate) const WORD_SHIFTS: bool = cfg!(fixray_chip = "armv6m");
@@ -48,5 +53,6 @@ mod tests {
         }
         assert_eq!(super::NO_LONG_MULTIPLY, FAMILY == "armv6m");
         assert_eq!(super::WORD_SHIFTS, FAMILY == "armv6m");
+        assert_eq!(super::HIGH_WORD_QUOTIENT, FAMILY == "armv7m");
     }
 }

@@ -293,7 +293,7 @@ impl Sphere {
         // saturation to check.
         let v = x.minus(self.centre);
         let shift = FRAC - 1 + self.inv_shift; // (v·2^(31+k)/r) / 2^(15+k) = v·2¹⁶/r
-        let (v, shift) = if !fx::NO_LONG_MULTIPLY && shift < 33 {
+        let (v, shift) = if fx::HIGH_WORD_QUOTIENT && shift < 33 {
             (lifted(v, self.inv_shift), 33)
         } else {
             (v, shift)
@@ -317,10 +317,9 @@ impl Sphere {
 /// The difference `v` from the centre of a sphere of radius below 4 (`k ≤ 17`, a shift of
 /// 32 or less, where the rounding would take the product's low word too), moved up by
 /// `18 − k` bits: divided by `2³³` it gives the same quotient, exactly, from the product's
-/// high word alone, one instruction where a 64-bit product is one. A component beyond
-/// `2^(k+2)`, more than twice the radius, is held at ±1 either way; held at `2^(k+2)` first,
-/// it fits 32 bits once moved (2²⁰). Not on the Cortex-M0: there the high word takes as many
-/// 16-bit products and carries as the whole product, and the plain quotient stays.
+/// high word alone, one instruction on the chips of [`fx::HIGH_WORD_QUOTIENT`]. A component
+/// beyond `2^(k+2)`, more than twice the radius, is held at ±1 either way; held at `2^(k+2)`
+/// first, it fits 32 bits once moved (2²⁰).
 fn lifted(v: Vec3, k: u32) -> Vec3 {
     let bound = 1i32 << (k + 2);
     let lift = |c: Fx| Fx::from_bits(c.to_bits().max(-bound).min(bound) << (18 - k));

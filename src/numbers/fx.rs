@@ -29,7 +29,7 @@ pub(crate) const HIT_REACH: i32 = LIMIT.to_bits() + FAR.to_bits();
 /// Number of fractional bits in [`Fx`].
 pub(crate) const FRAC: u32 = 16;
 
-pub(crate) use crate::chip::{NO_CLZ, NO_DIVIDE, NO_LONG_MULTIPLY};
+pub(crate) use crate::chip::{HIGH_WORD_QUOTIENT, NO_CLZ, NO_DIVIDE, NO_LONG_MULTIPLY};
 use crate::numbers::split::{
     split_mul, split_mul_fits, split_mul_high, split_mul_u32, split_mul_unit,
 };

@@ -437,16 +437,15 @@ const fn unit_factor(y: u32, half: u32) -> (u32, u32) {
 ///
 /// A vector shorter than 4 (a sum of unit vectors, as a highlight's half vector is, or a
 /// mirrored or refracted direction) has a shift of 32 or less, where the rounding would take
-/// the product's low word too. Where a 64-bit product is one instruction, `c` is moved up to
-/// a shift of 33 instead, the same quotient exactly from the product's high word alone:
-/// `|c| < 2^(shift − 14)`, so moved up by `33 − shift` bits it stays below 2¹⁹. Not on the
-/// Cortex-M0, whose high word costs as much as the whole product there
-/// (`fx::mul_shift_round`).
+/// the product's low word too. Where the high word is one instruction
+/// ([`fx::HIGH_WORD_QUOTIENT`]), `c` is moved up to a shift of 33 instead, the same quotient
+/// exactly from the product's high word alone: `|c| < 2^(shift − 14)`, so moved up by
+/// `33 − shift` bits it stays below 2¹⁹.
 #[inline]
 const fn unit_part(c: Fx, y: u32, shift: u32) -> Fx {
     // Its own call with the shift a constant, which the rounding is folded with: a shift
     // chosen between the two would be a variable again.
-    if !fx::NO_LONG_MULTIPLY && shift < 33 {
+    if fx::HIGH_WORD_QUOTIENT && shift < 33 {
         let moved = c.to_bits() << (33 - shift);
         return Fx::from_bits(fx::mul_shift_round(moved, y as i32, 33) as i32);
     }
