@@ -167,12 +167,13 @@ pub fn camera(width: u32, height: u32) -> Result<Camera, Error> {
 #[must_use]
 pub const fn classic() -> Scene<8> {
     // Built once by the compiler, as [`scene`] is.
-    const CLASSIC: Scene<8> = classic_scene(true);
+    const CLASSIC: Scene<8> = classic_scene(true, true);
     CLASSIC
 }
 
-/// [`classic`], built; with `refracts` false, [`classic_opaque`].
-const fn classic_scene(refracts: bool) -> Scene<8> {
+/// [`classic`], built; with `refracts` false, [`classic_opaque`]; with `mirrors` false,
+/// [`classic_without_mirrors`].
+const fn classic_scene(refracts: bool, mirrors: bool) -> Scene<8> {
     const fn material(
         colour: Rgb,
         diffuse: i32,
@@ -188,6 +189,8 @@ const fn classic_scene(refracts: bool) -> Scene<8> {
             tenths(reflect),
         ))
     }
+    // Every reflection times 0 or 1.
+    let m = mirrors as i32;
     const fn light(x: i16, y: i16, z: i16, intensity: i32) -> Light {
         valid(Light::from_fx(Vec3::from_ints(x, y, z), tenths(intensity)))
     }
@@ -199,7 +202,7 @@ const fn classic_scene(refracts: bool) -> Scene<8> {
         Material::matte(Rgb::new(77, 77, 77))
             .with_checker_fx(Fx::const_from_int(2), Rgb::new(77, 51, 26)),
     );
-    let opaque = material(Rgb::new(153, 179, 204), 0, 5, 125, 1);
+    let opaque = material(Rgb::new(153, 179, 204), 0, 5, 125, m);
     let glass = if refracts {
         valid(opaque.with_refraction_fx(Fx::from_bits(3 << 15), tenths(8)))
     } else {
@@ -215,10 +218,10 @@ const fn classic_scene(refracts: bool) -> Scene<8> {
         sky,
         &[
             Object::new(Shape::Plane(floor), floor_material),
-            sphere(0, material(Rgb::new(102, 102, 77), 6, 3, 50, 1)), // ivory
+            sphere(0, material(Rgb::new(102, 102, 77), 6, 3, 50, m)), // ivory
             sphere(1, glass),                                         // glass
             sphere(2, material(Rgb::new(77, 26, 26), 9, 1, 10, 0)),   // red rubber
-            sphere(3, material(Rgb::WHITE, 0, 100, 1425, 8)),         // mirror
+            sphere(3, material(Rgb::WHITE, 0, 100, 1425, 8 * m)),     // mirror
         ],
     );
     valid(scene.add_light(light(30, 50, -25, 18)));
@@ -229,8 +232,16 @@ const fn classic_scene(refracts: bool) -> Scene<8> {
 /// [`classic`] with its glass opaque: the same material without refraction.
 #[must_use]
 pub const fn classic_opaque() -> Scene<8> {
-    const OPAQUE: Scene<8> = classic_scene(false);
+    const OPAQUE: Scene<8> = classic_scene(false, true);
     OPAQUE
+}
+
+/// [`classic`] with no mirror: every material's reflection 0, all else (the glass's refraction
+/// too) kept, to show what mirrors cost.
+#[must_use]
+pub const fn classic_without_mirrors() -> Scene<8> {
+    const WITHOUT_MIRRORS: Scene<8> = classic_scene(true, false);
+    WITHOUT_MIRRORS
 }
 
 /// Vertical field of view of the classic camera, as in tinyraytracer.

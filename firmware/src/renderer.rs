@@ -8,7 +8,7 @@
 
 use core::fmt::Debug;
 
-use fixray::{Camera, Error, Fx, Material, Rgb, Scene, demo};
+use fixray::{Camera, Error, Rgb, Scene, demo};
 use fixray_reference::{self as reference, DCamera, DScene, Real};
 
 /// Columns of the frame (its width).
@@ -62,24 +62,28 @@ impl Variant {
         }
     }
 
-    /// The fixed-point scene.
-    pub fn scene(self) -> Result<Scene<8>, Error> {
-        Ok(match self {
-            Variant::Demo => demo::scene(),
-            Variant::DemoNoShadow => {
-                let mut scene = demo::scene();
-                scene.set_shadows(false);
-                scene
-            }
-            Variant::Classic => demo::classic(),
-            Variant::ClassicNoShadow => {
-                let mut scene = demo::classic();
-                scene.set_shadows(false);
-                scene
-            }
-            Variant::ClassicNoMirror => without_mirrors(&demo::classic())?,
-            Variant::ClassicOpaque => demo::classic_opaque(),
-        })
+    /// The fixed-point scene, a `static` the compiler built: in flash, as a user's scene on a
+    /// microcontroller would be, so that drawing it takes no RAM for the scene.
+    #[must_use]
+    pub fn scene(self) -> &'static Scene<8> {
+        const fn without_shadows(mut scene: Scene<8>) -> Scene<8> {
+            scene.set_shadows(false);
+            scene
+        }
+        static DEMO: Scene<8> = demo::scene();
+        static DEMO_NOSHADOW: Scene<8> = without_shadows(demo::scene());
+        static CLASSIC: Scene<8> = demo::classic();
+        static CLASSIC_NOSHADOW: Scene<8> = without_shadows(demo::classic());
+        static CLASSIC_NOMIRROR: Scene<8> = demo::classic_without_mirrors();
+        static CLASSIC_OPAQUE: Scene<8> = demo::classic_opaque();
+        match self {
+            Variant::Demo => &DEMO,
+            Variant::DemoNoShadow => &DEMO_NOSHADOW,
+            Variant::Classic => &CLASSIC,
+            Variant::ClassicNoShadow => &CLASSIC_NOSHADOW,
+            Variant::ClassicNoMirror => &CLASSIC_NOMIRROR,
+            Variant::ClassicOpaque => &CLASSIC_OPAQUE,
+        }
     }
 
     /// The fixed-point camera for a `cols × rows` frame.
@@ -100,36 +104,6 @@ impl Variant {
     }
 }
 
-/// `scene` with every material's mirror turned off, all else (refraction too) kept.
-///
-/// It holds two scenes at once. Never inlined, so that they take stack only while it runs,
-/// during the set-up, and not in the frame that renders.
-#[inline(never)]
-fn without_mirrors(scene: &Scene<8>) -> Result<Scene<8>, Error> {
-    let mut out = scene.clone();
-    for (index, object) in scene.objects().iter().enumerate() {
-        let m = object.material;
-        let mut matte = Material::from_fx(
-            m.colour(),
-            m.diffuse(),
-            m.specular(),
-            m.shininess(),
-            Fx::ZERO,
-        )?;
-        if let Some(checker) = m.checker() {
-            matte = matte.with_checker_fx(checker.size(), checker.other())?;
-        }
-        if let Some(refraction) = m.refraction() {
-            matte = matte.with_refraction_fx(refraction.index(), refraction.weight())?;
-            if refraction.fresnel() {
-                matte = matte.with_fresnel();
-            }
-        }
-        out.set_material(index, matte)?;
-    }
-    Ok(out)
-}
-
 /// A renderer the firmware can measure: built for a scene, then asked for one row at a time,
 /// so a frame never has to fit in RAM.
 pub trait Renderer: Sized {
@@ -147,7 +121,7 @@ pub trait Renderer: Sized {
 
 /// fixray's Q16.16 renderer: integer arithmetic only.
 pub struct Fixed {
-    scene: Scene<8>,
+    scene: &'static Scene<8>,
     camera: Camera,
 }
 
@@ -157,13 +131,13 @@ impl Renderer for Fixed {
 
     fn new(variant: Variant, cols: u32, rows: u32) -> Result<Self, Error> {
         Ok(Fixed {
-            scene: variant.scene()?,
+            scene: variant.scene(),
             camera: variant.camera(cols, rows)?,
         })
     }
 
     fn render_row(&self, row: u32, out: &mut [Rgb]) -> Result<(), Error> {
-        fixray::render_row(&self.scene, &self.camera, row, out)
+        fixray::render_row(self.scene, &self.camera, row, out)
     }
 }
 
@@ -186,14 +160,14 @@ impl Renderer for FixedRays {
     type Error = Error;
 
     fn new(variant: Variant, cols: u32, rows: u32) -> Result<Self, Error> {
-        let (scene, camera) = (variant.scene()?, variant.camera(cols, rows)?);
+        let (scene, camera) = (variant.scene(), variant.camera(cols, rows)?);
         let width = u16::try_from(cols).map_err(|_| Error::CapacityExceeded { capacity: 4096 })?;
         let mut skips = [[(width, width); SKIPS]; ROWS as usize];
         let too_many = Error::CapacityExceeded { capacity: SKIPS };
         for (row, runs) in (0..rows).zip(skips.iter_mut()) {
             let mut count = 0;
             fixray::internals::shoot_row_skipping(
-                &scene,
+                scene,
                 &camera,
                 row,
                 |run| {
@@ -248,7 +222,7 @@ impl Renderer for FixedRays {
 /// `render_row` makes them ([`fixray::shoot_row_skipping`], culling and runs of sky included),
 /// written out as the hit's object and distance.
 pub struct FixedShoot {
-    scene: Scene<8>,
+    scene: &'static Scene<8>,
     camera: Camera,
 }
 
@@ -258,13 +232,13 @@ impl Renderer for FixedShoot {
 
     fn new(variant: Variant, cols: u32, rows: u32) -> Result<Self, Error> {
         Ok(FixedShoot {
-            scene: variant.scene()?,
+            scene: variant.scene(),
             camera: variant.camera(cols, rows)?,
         })
     }
 
     fn render_row(&self, row: u32, out: &mut [Rgb]) -> Result<(), Error> {
-        let (scene, camera) = (&self.scene, &self.camera);
+        let (scene, camera) = (self.scene, &self.camera);
         let mut empty = [(0u32, 0u32); SKIPS];
         let mut count = 0;
         fixray::internals::shoot_row_skipping(
@@ -314,9 +288,8 @@ impl<F: Real> Renderer for Reference<F> {
     type Error = &'static str;
 
     fn new(variant: Variant, cols: u32, rows: u32) -> Result<Self, Self::Error> {
-        let scene = variant.scene().map_err(|_| "the fixed scene was refused")?;
         Ok(Reference {
-            scene: DScene::from_scene(&scene).ok_or("the scene has no reference twin")?,
+            scene: DScene::from_scene(variant.scene()).ok_or("the scene has no reference twin")?,
             camera: variant.dcamera(cols, rows).ok_or("a degenerate camera")?,
         })
     }

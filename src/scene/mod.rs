@@ -336,7 +336,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     }
 
     /// Turns shadow rays on or off (on by default).
-    pub fn set_shadows(&mut self, on: bool) {
+    pub const fn set_shadows(&mut self, on: bool) {
         self.shadows = on;
     }
 
