@@ -3,7 +3,7 @@
 //! family (`fixray_chip`) from the target; this is the one place that reads it.
 //!
 //! Every path these facts choose computes the same values as the other; the host's tests run
-//! each family's paths by forcing the family (`RUSTFLAGS='--cfg fixray_chip="armv6m"'`), and
+//! each family's paths by forcing the family (`FIXRAY_CHIP=armv6m cargo test`), and
 //! ARCHITECTURE.md lists them with what each saves.
 
 /// ARMv6-M (Cortex-M0/M0+), which multiplies 32 × 32 → 32 only: there the compiler's 64-bit
