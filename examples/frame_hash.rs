@@ -39,7 +39,7 @@ fn main() {
 
 /// Prints `name hash` for every scene drawn by `R`.
 fn print_hashes<R: Renderer>() {
-    for variant in Variant::ALL {
+    for &variant in Variant::ALL {
         let renderer = R::new(variant, COLS, ROWS).expect("the firmware's scenes are valid");
         let mut row = [Rgb::BLACK; COLS as usize];
         let mut hash = FrameHash::new();

@@ -173,9 +173,25 @@ remap() { # target: the --config value for it
         "$1" "$link" "$cargo_home"
 }
 
+# The binaries that draw the classic scene need fixray's `mirrors-and-glass` feature (their
+# `[[bin]]` entries in firmware/Cargo.toml require it): they are built with it, in a target
+# directory of their own, and the others without it, as a user's scene without mirrors or
+# glass would be.
+mapfile -t mirrored < <(awk '/^name = /{ gsub(/"/, "", $3); name = $3 }
+    /^required-features = \["mirrors-and-glass"\]/{ print name }' "$firmware/Cargo.toml")
+is_mirrored() { [[ " ${mirrored[*]} " == *" $1 "* ]]; }
+target_dir_of() { # bin: the target directory it is built in
+    if is_mirrored "$1"; then echo "$firmware/target/mirrors"; else echo "$firmware/target"; fi
+}
+features_of() { # bin: the features it is built with
+    if is_mirrored "$1"; then echo mirrors-and-glass; fi
+}
 for target in "${targets[@]}"; do
     (cd "$firmware" && cargo build --quiet --release --manifest-path "$manifest" \
         --target "$target" --config "$(remap "$target")" --bins 9>&-)
+    (cd "$firmware" && cargo build --quiet --release --manifest-path "$manifest" \
+        --target "$target" --config "$(remap "$target")" --features mirrors-and-glass \
+        --target-dir "$(target_dir_of "${mirrored[0]}")" $(printf -- '--bin %s ' "${mirrored[@]}") 9>&-)
 done
 
 logs="$firmware/target/firmware-logs"
@@ -195,7 +211,8 @@ names=()
 run_firmware() { # target, bin: runs one firmware under QEMU into $log; its exit status in $status
     status=0
     (cd "$firmware" && cargo run --quiet --release --manifest-path "$manifest" --target "$1" \
-        --config "$(remap "$1")" --bin "$2" 9>&-) \
+        --config "$(remap "$1")" --features "$(features_of "$2")" \
+        --target-dir "$(target_dir_of "$2")" --bin "$2" 9>&-) \
         >"$log" 2>&1 || status=$?
 }
 row() { printf '%-28s %-24s %-8s %12s %9s %7s %7s %7s %7s %7s\n' "$@"; }
@@ -220,7 +237,7 @@ for target in "${targets[@]}"; do
         [[ $verdict == match ]] || failed=1
         static=$(field static_ram "$memory")
         stack=$(field peak_stack "$memory")
-        own=$(python3 "$root/scripts/own_code.py" "$firmware/target/$target/release/$bin" || echo -)
+        own=$(python3 "$root/scripts/own_code.py" "$(target_dir_of "$bin")/$target/release/$bin" || echo -)
         row "$target" "$renderer" "$verdict" "$(field instructions "$frame")" \
             "$(field per_pixel "$frame")" "$(field flash "$memory")" "$own" $((static + stack)) \
             "$static" "$stack"

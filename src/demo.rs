@@ -5,7 +5,8 @@
 //!   60° vertical field of view.
 //! - [`classic`]: the same four spheres as ivory, glass, red rubber and a mirror, three lights,
 //!   and a checkerboard floor — the geometry of ssloy's tinyraytracer — seen by the look-at
-//!   camera ([`classic_camera`]).
+//!   camera ([`classic_camera`]). It and its variants need the `mirrors-and-glass` feature (on
+//!   by default).
 
 use embedded_graphics::geometry::Size;
 
@@ -164,6 +165,7 @@ pub fn camera(width: u32, height: u32) -> Result<Camera, Error> {
 /// mirror image, a highlight of 0.5 with shininess 125 and no diffuse term (no Fresnel
 /// weighting, as there). [`classic_opaque`] is the same scene with the glass's refraction
 /// left out, to show what refraction costs.
+#[cfg(feature = "mirrors-and-glass")]
 #[must_use]
 pub const fn classic() -> Scene<8> {
     // Built once by the compiler, as [`scene`] is.
@@ -173,6 +175,7 @@ pub const fn classic() -> Scene<8> {
 
 /// [`classic`], built; with `refracts` false, [`classic_opaque`]; with `mirrors` false,
 /// [`classic_without_mirrors`].
+#[cfg(feature = "mirrors-and-glass")]
 const fn classic_scene(refracts: bool, mirrors: bool) -> Scene<8> {
     const fn material(
         colour: Rgb,
@@ -230,6 +233,7 @@ const fn classic_scene(refracts: bool, mirrors: bool) -> Scene<8> {
 }
 
 /// [`classic`] with its glass opaque: the same material without refraction.
+#[cfg(feature = "mirrors-and-glass")]
 #[must_use]
 pub const fn classic_opaque() -> Scene<8> {
     const OPAQUE: Scene<8> = classic_scene(false, true);
@@ -238,6 +242,7 @@ pub const fn classic_opaque() -> Scene<8> {
 
 /// [`classic`] with no mirror: every material's reflection 0, all else (the glass's refraction
 /// too) kept, to show what mirrors cost.
+#[cfg(feature = "mirrors-and-glass")]
 #[must_use]
 pub const fn classic_without_mirrors() -> Scene<8> {
     const WITHOUT_MIRRORS: Scene<8> = classic_scene(true, false);

@@ -66,6 +66,9 @@ pub enum Error {
     },
     /// Plane bounds that enclose nothing: `min` must lie below `max` on both axes.
     EmptyBounds,
+    /// A material that mirrors or refracts, in a build of fixray without its
+    /// `mirrors-and-glass` feature (on by default), which leaves the secondary rays' code out.
+    MirrorsAndGlassLeftOut,
     /// A scene or light list is full; the capacity is in its type.
     CapacityExceeded {
         /// The capacity that was reached.
@@ -322,6 +325,7 @@ impl fmt::Debug for Error {
             Error::NonPositiveRadius => ("NonPositiveRadius", &[]),
             Error::ZeroVector { quantity } => ("ZeroVector", &[("quantity", quantity)]),
             Error::EmptyBounds => ("EmptyBounds", &[]),
+            Error::MirrorsAndGlassLeftOut => ("MirrorsAndGlassLeftOut", &[]),
             Error::CapacityExceeded { capacity } => ("CapacityExceeded", &[("capacity", capacity)]),
             Error::DegenerateCamera(problem) => {
                 return f.debug_tuple("DegenerateCamera").field(problem).finish();
@@ -412,6 +416,10 @@ impl fmt::Display for Error {
                     "plane bounds enclose nothing: min must lie below max on both axes"
                 )
             }
+            Error::MirrorsAndGlassLeftOut => write!(
+                f,
+                "a mirror or glass material needs fixray's mirrors-and-glass feature, which this build leaves out"
+            ),
             Error::CapacityExceeded { capacity } => {
                 write!(f, "capacity of {capacity} is already used")
             }
@@ -527,6 +535,7 @@ mod tests {
                 "NotFinite { quantity: SphereRadius }",
             ),
             (Error::NonPositiveRadius, "NonPositiveRadius"),
+            (Error::MirrorsAndGlassLeftOut, "MirrorsAndGlassLeftOut"),
             (
                 Error::ZeroVector { quantity },
                 "ZeroVector { quantity: SphereRadius }",

@@ -22,30 +22,38 @@ pub enum Variant {
     /// `demo::scene()` (four matte spheres, a ground plane, one light, shadows) through
     /// `demo::camera`, the chapter's pinhole camera.
     Demo,
+    #[cfg(feature = "mirrors-and-glass")]
     /// `demo::classic()` (highlights, three lights, shadows, mirrors, a checkerboard floor)
     /// through `demo::classic_camera`, a look-at camera with a 60° field of view.
     Classic,
     /// The demo scene without shadow rays: against `Demo`, what its shadows cost.
     DemoNoShadow,
+    #[cfg(feature = "mirrors-and-glass")]
     /// The classic scene without shadow rays: what shadows cost.
     ClassicNoShadow,
+    #[cfg(feature = "mirrors-and-glass")]
     /// The classic scene with every material's `reflect` set to 0: what mirrors cost.
     ///
     /// Not `set_depth(0)`: at depth 0 a mirror still adds the sky along its mirror ray.
     ClassicNoMirror,
+    #[cfg(feature = "mirrors-and-glass")]
     /// `demo::classic_opaque()`: the classic scene with its glass not refracting, what
     /// refraction costs.
     ClassicOpaque,
 }
 
 impl Variant {
-    /// All of them.
-    pub const ALL: [Variant; 6] = [
+    /// All of them in this build: the classic scene's only with `mirrors-and-glass`.
+    pub const ALL: &[Variant] = &[
         Variant::Demo,
         Variant::DemoNoShadow,
+        #[cfg(feature = "mirrors-and-glass")]
         Variant::Classic,
+        #[cfg(feature = "mirrors-and-glass")]
         Variant::ClassicNoShadow,
+        #[cfg(feature = "mirrors-and-glass")]
         Variant::ClassicNoMirror,
+        #[cfg(feature = "mirrors-and-glass")]
         Variant::ClassicOpaque,
     ];
 
@@ -55,9 +63,13 @@ impl Variant {
         match self {
             Variant::Demo => "",
             Variant::DemoNoShadow => "-noshadow",
+            #[cfg(feature = "mirrors-and-glass")]
             Variant::Classic => "-classic",
+            #[cfg(feature = "mirrors-and-glass")]
             Variant::ClassicNoShadow => "-classic-noshadow",
+            #[cfg(feature = "mirrors-and-glass")]
             Variant::ClassicNoMirror => "-classic-nomirror",
+            #[cfg(feature = "mirrors-and-glass")]
             Variant::ClassicOpaque => "-classic-opaque",
         }
     }
@@ -72,16 +84,24 @@ impl Variant {
         }
         static DEMO: Scene<8> = demo::scene();
         static DEMO_NOSHADOW: Scene<8> = without_shadows(demo::scene());
+        #[cfg(feature = "mirrors-and-glass")]
         static CLASSIC: Scene<8> = demo::classic();
+        #[cfg(feature = "mirrors-and-glass")]
         static CLASSIC_NOSHADOW: Scene<8> = without_shadows(demo::classic());
+        #[cfg(feature = "mirrors-and-glass")]
         static CLASSIC_NOMIRROR: Scene<8> = demo::classic_without_mirrors();
+        #[cfg(feature = "mirrors-and-glass")]
         static CLASSIC_OPAQUE: Scene<8> = demo::classic_opaque();
         match self {
             Variant::Demo => &DEMO,
             Variant::DemoNoShadow => &DEMO_NOSHADOW,
+            #[cfg(feature = "mirrors-and-glass")]
             Variant::Classic => &CLASSIC,
+            #[cfg(feature = "mirrors-and-glass")]
             Variant::ClassicNoShadow => &CLASSIC_NOSHADOW,
+            #[cfg(feature = "mirrors-and-glass")]
             Variant::ClassicNoMirror => &CLASSIC_NOMIRROR,
+            #[cfg(feature = "mirrors-and-glass")]
             Variant::ClassicOpaque => &CLASSIC_OPAQUE,
         }
     }
@@ -90,6 +110,7 @@ impl Variant {
     pub fn camera(self, cols: u32, rows: u32) -> Result<Camera, Error> {
         match self {
             Variant::Demo | Variant::DemoNoShadow => demo::camera(cols, rows),
+            #[cfg(feature = "mirrors-and-glass")]
             _ => demo::classic_camera(cols, rows),
         }
     }
@@ -99,6 +120,7 @@ impl Variant {
     pub fn dcamera<F: Real>(self, cols: u32, rows: u32) -> Option<DCamera<F>> {
         match self {
             Variant::Demo | Variant::DemoNoShadow => reference::demo_camera(cols, rows),
+            #[cfg(feature = "mirrors-and-glass")]
             _ => reference::classic_camera(cols, rows),
         }
     }

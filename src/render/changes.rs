@@ -361,11 +361,8 @@ impl Damage {
         if !(0..after.objects().len()).any(changed) {
             return Some(());
         }
-        let see_through = |scene: &Scene<N, L>| {
-            (scene.objects().iter()).any(|o| {
-                o.material.reflect() != crate::Fx::ZERO || o.material.refraction().is_some()
-            })
-        };
+        let see_through =
+            |scene: &Scene<N, L>| (scene.objects().iter()).any(|o| o.material.sends_rays());
         if see_through(before) || see_through(after) {
             return None;
         }

@@ -132,9 +132,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         local: &impl Fn(&Object, &Surface, Vec3) -> Linear,
     ) -> Linear {
         match self.objects().get(first.object) {
-            Some(object)
-                if object.material.reflect != Fx::ZERO || object.material.refraction.is_some() =>
-            {
+            Some(object) if object.material.sends_rays() => {
                 self.secondary(light, dir, first, local)
             }
             _ => light,

@@ -9,6 +9,9 @@ use crate::scene::linear::least_lit_base;
 /// The largest shininess [`Material::new`] accepts.
 const MAX_SHININESS: u16 = 4096;
 
+/// Whether this build follows mirror and refracted rays (the `mirrors-and-glass` feature).
+const MIRRORS_AND_GLASS: bool = cfg!(feature = "mirrors-and-glass");
+
 /// How a surface shades: Lambert diffuse, Blinn-Phong specular, mirror reflection and
 /// refraction.
 ///
@@ -95,6 +98,13 @@ impl Material {
         self.specular.to_bits() == 0 && self.reflect.to_bits() == 0 && self.refraction.is_none()
     }
 
+    /// Whether a hit on this material sends on a mirror or a refracted ray. Never in a build
+    /// without the `mirrors-and-glass` feature, where no material can: the compiler then
+    /// leaves the tree of secondary rays out of the renderer.
+    pub(crate) const fn sends_rays(&self) -> bool {
+        MIRRORS_AND_GLASS && (self.reflect.to_bits() != 0 || self.refraction.is_some())
+    }
+
     /// A material, checked: `diffuse` 0 to 2, `specular` 0 to 16, `shininess` 1 to 4096,
     /// `reflect` 0 to 1.
     ///
@@ -155,6 +165,9 @@ impl Material {
                 min: Fx::ONE,
                 max: Fx::const_from_int(MAX_SHININESS as i32),
             });
+        }
+        if reflect.to_bits() != 0 && !MIRRORS_AND_GLASS {
+            return Err(Error::MirrorsAndGlassLeftOut);
         }
         Ok(Material {
             colour,
@@ -227,6 +240,9 @@ impl Material {
         }
         if let Err(e) = check::within(weight, Fx::DELTA, Fx::ONE, Quantity::Refraction) {
             return Err(e);
+        }
+        if !MIRRORS_AND_GLASS {
+            return Err(Error::MirrorsAndGlassLeftOut);
         }
         // index in [¼, 4], raw in [2¹⁴, 2¹⁸]: 2³²/index lies in [2¹⁴, 2¹⁸] too, and
         // |index − 1| < index + 1, so the quotient below is under 1.
@@ -401,6 +417,30 @@ impl Checker {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn mirrors_and_glass_are_refused_only_without_their_feature() {
+        let mirror = Material::from_fx(Rgb::WHITE, Fx::ZERO, Fx::ZERO, 1, Fx::from_num(0.5));
+        let glass = Material::matte(Rgb::WHITE).with_refraction_fx(Fx::from_num(1.5), Fx::ONE);
+        if cfg!(feature = "mirrors-and-glass") {
+            assert!(mirror.is_ok_and(|m| m.sends_rays()));
+            assert!(glass.is_ok_and(|m| m.sends_rays()));
+        } else {
+            assert_eq!(mirror, Err(Error::MirrorsAndGlassLeftOut));
+            assert_eq!(glass, Err(Error::MirrorsAndGlassLeftOut));
+        }
+        // A value out of range is named as such in either build; a matte surface is not refused.
+        let too_bright = Material::from_fx(Rgb::WHITE, Fx::ZERO, Fx::ZERO, 1, Fx::from_num(2));
+        assert!(matches!(
+            too_bright,
+            Err(Error::OutOfRange {
+                quantity: Quantity::Reflectivity,
+                ..
+            })
+        ));
+        let matte = Material::from_fx(Rgb::WHITE, Fx::ONE, Fx::ONE, 8, Fx::ZERO);
+        assert!(matte.is_ok_and(|m| !m.sends_rays()));
+    }
 
     #[test]
     fn a_checker_shows_its_size_and_other_colour() {

@@ -49,7 +49,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
             return self.matte_pixel_within_one(material, diffuse, object.colour_at(at.point));
         }
         let light = self.local_among(object, &at, ray.dir, sets);
-        if material.reflect == Fx::ZERO && material.refraction.is_none() {
+        if !material.sends_rays() {
             return rgb_of(light);
         }
         self.beyond(light, ray.dir, &h)

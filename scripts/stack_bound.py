@@ -1,0 +1,160 @@
+#!/usr/bin/env python3
+"""The static stack bound of a function in a firmware ELF: the largest sum of stack frames
+along any chain of calls from it, read from the machine code.
+
+Usage: scripts/stack_bound.py ELF SYMBOL_PATTERN [--objdump PROGRAM]
+
+For each function of the ELF (objdump's disassembly) the frame is what its code moves the
+stack pointer down by: the registers of its `push`/`vpush`/`stmdb sp!` (Arm) or the
+`addi sp, sp, -n` (RISC-V), plus every `sub sp` (an immediate, or a constant loaded from the
+function's literal pool). Its callees are the targets of `bl`/`blx label` and of branches
+that leave it (tail calls; counted as calls, an upper bound). The bound of a function is its
+frame plus the largest bound of its callees; a call through a register (`blx rN`, `jalr`)
+cannot be followed and is reported, so is recursion. Prints the bound of every function
+whose demangled name matches the pattern, with its deepest chain.
+
+Only the standard library of Python and binutils' objdump for the ELF's architecture.
+"""
+import re
+import subprocess
+import sys
+
+FUNCTION = re.compile(r"^([0-9a-f]+) <(.*)>:$")
+LINE = re.compile(r"^\s*([0-9a-f]+):\s+(\S+)\s*(.*)$")
+WORD = re.compile(r"^\s*([0-9a-f]+):\s+(?:[0-9a-f]{8}\s+)?\.word\s+0x([0-9a-f]+)")
+TARGET = re.compile(r"\b([0-9a-f]+) <([^>]+)>")
+
+
+def registers(text):
+    """The number of 32-bit registers in a register list such as {r4, r5, r6, r7, lr},
+    {r4-r11, lr} or {d8-d15} (a d register is two words)."""
+    inside = text[text.index("{") + 1 : text.index("}")]
+    words = 0
+    for part in inside.split(","):
+        part = part.strip()
+        size = 2 if part.startswith("d") else 1
+        if "-" in part:
+            lo, hi = part.split("-")
+            words += size * (int(hi.strip()[1:]) - int(lo.strip()[1:]) + 1)
+        else:
+            words += size
+    return 4 * words
+
+
+def disassemble(elf, objdump):
+    text = subprocess.run(
+        [objdump, "-d", "-C", "--no-show-raw-insn", elf],
+        check=True,
+        capture_output=True,
+        text=True,
+    ).stdout
+    functions = {}  # name -> dict(start, lines)
+    words = {}
+    current = None
+    for line in text.splitlines():
+        m = FUNCTION.match(line)
+        if m:
+            current = {"start": int(m.group(1), 16), "lines": []}
+            functions[m.group(2)] = current
+            continue
+        w = WORD.match(line)
+        if w:
+            words[int(w.group(1), 16)] = int(w.group(2), 16)
+            continue
+        m = LINE.match(line)
+        if m and current is not None:
+            current["lines"].append((int(m.group(1), 16), m.group(2), m.group(3)))
+    return functions, words
+
+
+def frame_and_calls(name, body, words, starts):
+    frame, calls, unknown = 0, set(), 0
+    loaded = {}  # register -> constant loaded from the literal pool
+    for address, op, args in body["lines"]:
+        op = op.split(".")[0] if op.startswith(("push", "sub", "add", "vpush", "stmdb", "bl", "b")) else op
+        if op in ("push", "vpush") or (op == "stmdb" and args.startswith("sp!")):
+            frame += registers(args)
+        elif op == "sub" and re.match(r"sp,\s*(sp,\s*)?#", args):
+            frame += int(re.search(r"#(-?\d+)", args).group(1))
+        elif op == "add" and re.match(r"sp,\s*(sp,\s*)?r\d+$", args.split("@")[0].strip()):
+            reg = args.split("@")[0].strip().split(",")[-1].strip()
+            value = loaded.get(reg)
+            if value is not None and value & 0x80000000:
+                frame += (1 << 32) - value
+        elif op == "ldr":
+            m = re.match(r"(r\d+),\s*\[pc.*@\s*\(([0-9a-f]+)", args) or re.match(
+                r"(r\d+),\s*\[pc.*;\s*\(([0-9a-f]+)", args
+            )
+            if m and int(m.group(2), 16) in words:
+                loaded[m.group(1)] = words[int(m.group(2), 16)]
+        elif op in ("addi", "c.addi", "c.addi16sp") and re.match(r"sp,\s*sp,\s*-\d+", args):
+            frame += int(re.search(r"-(\d+)", args).group(1))
+        elif op == "c.addi16sp" and re.match(r"sp,\s*-\d+", args):
+            frame += int(re.search(r"-(\d+)", args).group(1))
+        if op in ("bl", "blx", "jal", "call", "tail", "j", "b", "c.j", "c.jal") or (
+            op.startswith("b") and op not in ("bic", "bics", "bkpt")
+        ):
+            t = TARGET.search(args)
+            if t:
+                target_name = re.sub(r"\+0x[0-9a-f]+$", "", t.group(2))
+                if target_name != name and int(t.group(1), 16) in starts:
+                    calls.add(starts[int(t.group(1), 16)])
+            elif op in ("blx",) and re.match(r"r\d+|ip|lr", args.strip()):
+                unknown += 1
+        if op in ("jalr", "c.jalr") and "ra" in args or op == "blx" and not TARGET.search(args):
+            unknown += 1 if op != "blx" else 0
+    return frame, calls, unknown
+
+
+def main():
+    args = sys.argv[1:]
+    objdump = "arm-none-eabi-objdump"
+    if "--objdump" in args:
+        i = args.index("--objdump")
+        objdump = args[i + 1]
+        del args[i : i + 2]
+    if len(args) != 2:
+        sys.exit(__doc__)
+    elf, pattern = args
+    functions, words = disassemble(elf, objdump)
+    starts = {body["start"]: name for name, body in functions.items()}
+    info = {name: frame_and_calls(name, body, words, starts) for name, body in functions.items()}
+    memo, onstack, recursive = {}, set(), set()
+
+    def bound(name):
+        if name in memo:
+            return memo[name]
+        if name in onstack:
+            recursive.add(name)
+            return (0, [name + " (recursion)"], 0)
+        onstack.add(name)
+        frame, calls, unknown = info.get(name, (0, set(), 0))
+        best = (0, [], 0)
+        total_unknown = unknown
+        for callee in calls:
+            b = bound(callee)
+            total_unknown += b[2]
+            if b[0] > best[0]:
+                best = b
+        onstack.discard(name)
+        memo[name] = (frame + best[0], [f"{frame:6}  {name}"] + best[1], total_unknown)
+        return memo[name]
+
+    found = False
+    for name in sorted(functions):
+        if re.search(pattern, name):
+            found = True
+            total, chain, unknown = bound(name)
+            print(f"{total} bytes: {name}")
+            if unknown:
+                print(f"  ({unknown} calls through a register below it, not followed)")
+            for step in chain:
+                print("  " + step)
+    if recursive:
+        print("recursion, not bounded:", ", ".join(sorted(recursive)))
+    if not found:
+        sys.exit(f"stack_bound.py: no function matches {pattern!r}")
+
+
+if __name__ == "__main__":
+    main()
