@@ -1,5 +1,7 @@
 //! The speed-ups of the render path, each bit-identical to the plain path it replaces:
 //!
+//! - `camera_rows`: what the row walk asks of the camera (a row's first direction and column
+//!   step, the plane of a row's rays, a sphere's span of columns);
 //! - `row_rays`: a row's rays by exact column steps, their squared lengths carried along;
 //! - `runs`: a row cut into runs of columns that can meet the same objects (culling by the
 //!   row's plane, each sphere's column span, and planes every ray of a run points away from);
@@ -14,6 +16,7 @@
 //! can shadow each object from each light, are caches the scene keeps up to date as objects
 //! and lights are added: `scene/cone.rs` and `scene/shadowers.rs`.
 
+pub(crate) mod camera_rows;
 pub(crate) mod cull;
 pub(crate) mod matte;
 pub(crate) mod row_rays;
