@@ -109,6 +109,9 @@ need_command cargo "install Rust with rustup"
 need_command rustc "install Rust with rustup"
 need_command timeout "install coreutils"
 need_command flock "install util-linux"
+need_command python3 "apt-get install python3"
+need_command arm-none-eabi-objdump "apt-get install binutils-arm-none-eabi"
+need_command riscv64-unknown-elf-objdump "apt-get install binutils-riscv64-unknown-elf"
 for qemu in $(printf '%s\n' "${qemu_of[@]}" | sort -u); do
     case $qemu in
         qemu-system-arm) need_command "$qemu" "apt-get install qemu-system-arm" ;;
@@ -206,7 +209,7 @@ line() { # prefix: the line of the current run's report that starts with it
 
 failed=0
 calibrations=()
-declare -A per_pixel_of flash_of ram_of # by "target renderer"
+declare -A per_pixel_of flash_of ram_of own_of # by "target renderer"
 names=()
 run_firmware() { # target, bin: runs one firmware under QEMU into $log; its exit status in $status
     status=0
@@ -244,6 +247,7 @@ for target in "${targets[@]}"; do
         per_pixel_of["$target $renderer"]=$(field per_pixel "$frame")
         flash_of["$target $renderer"]=$(field flash "$memory")
         ram_of["$target $renderer"]=$((static + stack))
+        own_of["$target $renderer"]=$own
         if [[ $bin == "${bins[0]}" ]]; then # the counter is the same for every renderer
             counter=$(line counter: | sed 's/^counter: //; s/ instructions_per_tick=.*//')
             per_tick=$(field instructions_per_tick "$(line counter:)")
@@ -252,6 +256,27 @@ for target in "${targets[@]}"; do
       a loop of $(field expected "$calibration") counted as $(field measured "$calibration")")
         fi
     done
+done
+
+# The static stack bound from `render_row` down (scripts/stack_bound.py): the largest sum of
+# stack frames along any chain of calls from the firmware's call of `render_row` (the `fixed`
+# binary's, the demo scene), read from its machine code; the panic machinery, whose stack is
+# the panic handler's, left out. Painting measures one frame's path; this holds for any.
+echo
+declare -A bound_of
+for target in "${targets[@]}"; do
+    case $target in
+        riscv*) objdump=riscv64-unknown-elf-objdump ;;
+        *) objdump=arm-none-eabi-objdump ;;
+    esac
+    bound_of[$target]=$(python3 "$root/scripts/stack_bound.py" \
+        "$(target_dir_of fixed)/$target/release/fixed" 'Fixed as .*Renderer>::render_row$' \
+        --stop-at 'core::panicking' --objdump "$objdump" | sed -n '1s/ bytes.*//p')
+    if [[ -z ${bound_of[$target]} ]]; then
+        echo "firmware.sh: no stack bound for $target's fixed" >&2
+        failed=1
+    fi
+    printf '%-28s static stack bound from render_row down: %s bytes\n' "$target" "${bound_of[$target]}"
 done
 
 # The drawing layer (firmware/src/bin/draw.rs): each scene drawn onto an Rgb565 display through
@@ -401,11 +426,18 @@ tables() {
     unset IFS
     echo "Flash and RAM (static RAM + peak stack over set-up and frame), bytes, ${names//\// \/ }:"
     echo
-    echo "| renderer, scene | flash | RAM |"
-    echo "|---|---|---|"
+    echo "| renderer, scene | flash | fixray's own code | RAM |"
+    echo "|---|---|---|---|"
     for renderer in "${memory_rows[@]}"; do
-        echo "| \`$renderer\` | $(per_chip flash_of "$renderer") | $(per_chip ram_of "$renderer") |"
+        echo "| \`$renderer\` | $(per_chip flash_of "$renderer") | $(per_chip own_of "$renderer") | $(per_chip ram_of "$renderer") |"
     done
+    echo
+    local bounds=()
+    for target in "${targets[@]}"; do bounds+=("$(grouped "${bound_of[$target]:-}")"); done
+    IFS=/
+    local bound_list="${bounds[*]}"
+    unset IFS
+    echo "\`fixed\` and the demo's other binaries are built without the feature \`mirrors-and-glass\`, the classic scene's with it. fixray's own code is the ELF's symbols under \`fixray::\` (\`scripts/own_code.py\`). The static stack bound from a call of \`render_row\` down, over every path its machine code can take (\`scripts/stack_bound.py\`, the \`fixed\` binary, the panic machinery left out): ${bound_list//\// \/ } bytes."
     echo
     local pixels=${anim_pixels:-0} all=$((160 * 128))
     echo "Animation (\`firmware/src/bin/animate.rs\`): a ball of radius 1 rolling across the demo floor at 160 × 128, instructions a frame averaged over its frames, redrawing only the changed region (\`Damage\`) and the whole frame; the partial redraws send $(grouped $((2 * pixels))) bytes of Rgb565 a frame against $(grouped $((2 * all))), $(awk -v p="$pixels" -v a="$all" 'BEGIN { printf "%.1f", 100 * p / a }') %:"

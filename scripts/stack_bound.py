@@ -2,7 +2,7 @@
 """The static stack bound of a function in a firmware ELF: the largest sum of stack frames
 along any chain of calls from it, read from the machine code.
 
-Usage: scripts/stack_bound.py ELF SYMBOL_PATTERN [--objdump PROGRAM]
+Usage: scripts/stack_bound.py ELF SYMBOL_PATTERN [--objdump PROGRAM] [--stop-at PATTERN]
 
 For each function of the ELF (objdump's disassembly) the frame is what its code moves the
 stack pointer down by: the registers of its `push`/`vpush`/`stmdb sp!` (Arm) or the
@@ -11,7 +11,9 @@ function's literal pool). Its callees are the targets of `bl`/`blx label` and of
 that leave it (tail calls; counted as calls, an upper bound). The bound of a function is its
 frame plus the largest bound of its callees; a call through a register (`blx rN`, `jalr`)
 cannot be followed and is reported, so is recursion. Prints the bound of every function
-whose demangled name matches the pattern, with its deepest chain.
+whose demangled name matches the pattern, with its deepest chain. A function matching
+`--stop-at` counts its own frame but not its callees': the panic machinery, say, whose stack
+is the panic handler's, which ends the program.
 
 Only the standard library of Python and binutils' objdump for the ELF's architecture.
 """
@@ -87,11 +89,11 @@ def frame_and_calls(name, body, words, starts):
             )
             if m and int(m.group(2), 16) in words:
                 loaded[m.group(1)] = words[int(m.group(2), 16)]
-        elif op in ("addi", "c.addi", "c.addi16sp") and re.match(r"sp,\s*sp,\s*-\d+", args):
+        elif op in ("add", "addi", "c.addi", "c.addi16sp") and re.match(r"sp,\s*sp,\s*-\d+", args):
             frame += int(re.search(r"-(\d+)", args).group(1))
         elif op == "c.addi16sp" and re.match(r"sp,\s*-\d+", args):
             frame += int(re.search(r"-(\d+)", args).group(1))
-        if op in ("bl", "blx", "jal", "call", "tail", "j", "b", "c.j", "c.jal") or (
+        if op in ("bl", "blx", "jal", "jalr", "call", "tail", "j", "b", "c.j", "c.jal") or (
             op.startswith("b") and op not in ("bic", "bics", "bkpt")
         ):
             t = TARGET.search(args)
@@ -99,19 +101,21 @@ def frame_and_calls(name, body, words, starts):
                 target_name = re.sub(r"\+0x[0-9a-f]+$", "", t.group(2))
                 if target_name != name and int(t.group(1), 16) in starts:
                     calls.add(starts[int(t.group(1), 16)])
-            elif op in ("blx",) and re.match(r"r\d+|ip|lr", args.strip()):
-                unknown += 1
-        if op in ("jalr", "c.jalr") and "ra" in args or op == "blx" and not TARGET.search(args):
-            unknown += 1 if op != "blx" else 0
+            elif op in ("blx", "jalr", "c.jalr"):
+                unknown += 1  # through a register: a function pointer or a trait object
     return frame, calls, unknown
 
 
 def main():
     args = sys.argv[1:]
-    objdump = "arm-none-eabi-objdump"
+    objdump, stop = "arm-none-eabi-objdump", None
     if "--objdump" in args:
         i = args.index("--objdump")
         objdump = args[i + 1]
+        del args[i : i + 2]
+    if "--stop-at" in args:
+        i = args.index("--stop-at")
+        stop = re.compile(args[i + 1])
         del args[i : i + 2]
     if len(args) != 2:
         sys.exit(__doc__)
@@ -129,6 +133,8 @@ def main():
             return (0, [name + " (recursion)"], 0)
         onstack.add(name)
         frame, calls, unknown = info.get(name, (0, set(), 0))
+        if stop is not None and stop.search(name):
+            calls, unknown = set(), 0
         best = (0, [], 0)
         total_unknown = unknown
         for callee in calls:

@@ -80,6 +80,9 @@
 //!   fewer than 8 bits; [`DrawError`] for anything that draws
 //! - `demo` (feature `demo`): the scenes the examples, tests and firmware share (demo and
 //!   classic)
+//! - features: `mirrors-and-glass` (on by default) follows mirror and refracted rays; without
+//!   it that code is left out and such a material is refused
+//!   ([`Error::MirrorsAndGlassLeftOut`]). `demo` and `internals` are off by default.
 //! - an independent f64 model of the same maths is a crate of its own, `fixray-reference`
 //!   (the `reference/` folder), which sees only this public API
 

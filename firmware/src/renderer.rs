@@ -158,6 +158,9 @@ impl Renderer for Fixed {
         })
     }
 
+    // Out of line, a symbol of its own: scripts/stack_bound.py bounds the stack from
+    // `render_row` down from it, as a user's call of `render_row` would take.
+    #[inline(never)]
     fn render_row(&self, row: u32, out: &mut [Rgb]) -> Result<(), Error> {
         fixray::render_row(self.scene, &self.camera, row, out)
     }
