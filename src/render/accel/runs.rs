@@ -21,9 +21,10 @@ pub(crate) struct Runs<'a, const N: usize, const L: usize> {
     scene: &'a Scene<N, L>,
     /// The objects the row's plane can meet.
     among: u64,
-    /// Spheres with a span, and their spans (inclusive, possibly past the screen's edges).
+    /// Spheres with a span, and their spans (inclusive, possibly past the screen's edges), by
+    /// object: as many as the scene holds, of which the first 64 are used.
     bounded: u64,
-    spans: [(i16, i16); 64],
+    spans: [(i16, i16); N],
     /// Planes, and what their hit tests share for rays from the eye.
     planes: u64,
     eye: Eye<N>,
@@ -50,7 +51,7 @@ impl<'a, const N: usize, const L: usize> Runs<'a, N, L> {
             scene,
             among,
             bounded: 0,
-            spans: [(0, 0); 64],
+            spans: [(0, 0); N],
             planes: 0,
             shadowers: [!0; L],
             eye: Eye::new(scene, camera.eye(), among),
@@ -67,8 +68,10 @@ impl<'a, const N: usize, const L: usize> Runs<'a, N, L> {
                         Some(normal) => row_ball(&sphere, camera.eye(), normal),
                         None => (sphere.centre(), sphere.radius()),
                     };
-                    if let Some(span) = camera.column_span(centre, radius) {
-                        runs.spans[index] = span;
+                    if let (Some(span), Some(slot)) =
+                        (camera.column_span(centre, radius), runs.spans.get_mut(index))
+                    {
+                        *slot = span;
                         runs.bounded |= bits::bit(index);
                     }
                 }
@@ -118,7 +121,9 @@ impl<'a, const N: usize, const L: usize> Runs<'a, N, L> {
         while rest != 0 {
             let index = rest.trailing_zeros();
             rest &= rest - 1;
-            let (first, last) = self.spans[index as usize];
+            let Some(&(first, last)) = self.spans.get(index as usize) else {
+                continue; // not reached: a bit of `bounded` is an object's, which has a span
+            };
             if col < first {
                 here &= !bits::bit(index as usize);
                 until = until.min(first);
