@@ -269,14 +269,20 @@ for target in "${targets[@]}"; do
         riscv*) objdump=riscv64-unknown-elf-objdump ;;
         *) objdump=arm-none-eabi-objdump ;;
     esac
+    # fixed_call draws the demo as fixed does, render_row a call of its own (a symbol to
+    # start from); its frame must be fixed's, which the run checks.
+    log="$logs/$target-fixed_call.txt"
+    run_firmware "$target" fixed_call
+    verdict=MISMATCH
+    [[ $(field hash "$(line frame:)") == "${host_hash[fixed]:-none}" ]] && verdict=match
+    [[ $status == 0 && $verdict == match ]] || failed=1
     bound_of[$target]=$(python3 "$root/scripts/stack_bound.py" \
-        "$(target_dir_of fixed)/$target/release/fixed" 'Fixed as .*Renderer>::render_row$' \
-        --stop-at 'core::panicking' --objdump "$objdump" | sed -n '1s/ bytes.*//p')
-    if [[ -z ${bound_of[$target]} ]]; then
-        echo "firmware.sh: no stack bound for $target's fixed" >&2
-        failed=1
-    fi
-    printf '%-28s static stack bound from render_row down: %s bytes\n' "$target" "${bound_of[$target]}"
+        "$(target_dir_of fixed_call)/$target/release/fixed_call" \
+        'FixedCall as .*Renderer>::render_row$' --stop-at 'core::panicking' \
+        --objdump "$objdump" | sed -n '1s/ bytes.*//p')
+    [[ -n ${bound_of[$target]} ]] || failed=1
+    printf '%-28s fixed_call %-8s static stack bound from render_row down: %s bytes\n' \
+        "$target" "$verdict" "${bound_of[$target]:-none}"
 done
 
 # The drawing layer (firmware/src/bin/draw.rs): each scene drawn onto an Rgb565 display through
@@ -437,7 +443,7 @@ tables() {
     IFS=/
     local bound_list="${bounds[*]}"
     unset IFS
-    echo "\`fixed\` and the demo's other binaries are built without the feature \`mirrors-and-glass\`, the classic scene's with it. fixray's own code is the ELF's symbols under \`fixray::\` (\`scripts/own_code.py\`). The static stack bound from a call of \`render_row\` down, over every path its machine code can take (\`scripts/stack_bound.py\`, the \`fixed\` binary, the panic machinery left out): ${bound_list//\// \/ } bytes."
+    echo "\`fixed\` and the demo's other binaries are built without the feature \`mirrors-and-glass\`, the classic scene's with it. fixray's own code is the ELF's symbols under \`fixray::\` (\`scripts/own_code.py\`). The static stack bound from a call of \`render_row\` down, over every path its machine code can take (\`scripts/stack_bound.py\` on \`fixed_call\`, which draws as \`fixed\` with \`render_row\` a call of its own; the panic machinery left out): ${bound_list//\// \/ } bytes."
     echo
     local pixels=${anim_pixels:-0} all=$((160 * 128))
     echo "Animation (\`firmware/src/bin/animate.rs\`): a ball of radius 1 rolling across the demo floor at 160 × 128, instructions a frame averaged over its frames, redrawing only the changed region (\`Damage\`) and the whole frame; the partial redraws send $(grouped $((2 * pixels))) bytes of Rgb565 a frame against $(grouped $((2 * all))), $(awk -v p="$pixels" -v a="$all" 'BEGIN { printf "%.1f", 100 * p / a }') %:"

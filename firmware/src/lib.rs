@@ -14,6 +14,7 @@
 //! | `reference_f32`, `reference_f32_classic` | both scenes by the reference in `f32` (the Cortex-M4F's FPU) |
 //! | `animate` | a ball rolling across the demo floor, each frame redrawn where it changed and in full ([`animation`]) |
 //! | `draw` | both scenes through `Viewport::render` and a `Picture` onto an `Rgb565` display: the drawing layer's stack |
+//! | `fixed_call` | the demo as `fixed` draws it, with `render_row` a call of its own: the static stack bound from it down ([`FixedCall`]) |
 //!
 //! It prints over semihosting what `scripts/firmware.sh` turns into a table: the
 //! [`fixray::FrameHash`] of the frame (the host computes the same one, with the same
@@ -77,7 +78,9 @@ pub mod renderer;
 pub mod stack;
 
 pub use harness::run;
-pub use renderer::{COLS, Fixed, FixedRays, FixedShoot, ROWS, Reference, Renderer, Variant};
+pub use renderer::{
+    COLS, Fixed, FixedCall, FixedRays, FixedShoot, ROWS, Reference, Renderer, Variant,
+};
 
 /// The entry point of a firmware binary: [`run`] with the renderer `$renderer` on the scene
 /// [`Variant`]`::$variant`, started by the board's start-up crate (`cortex-m-rt` or

@@ -68,9 +68,10 @@ impl<'a, const N: usize, const L: usize> Runs<'a, N, L> {
                         Some(normal) => row_ball(&sphere, camera.eye(), normal),
                         None => (sphere.centre(), sphere.radius()),
                     };
-                    if let (Some(span), Some(slot)) =
-                        (camera.column_span(centre, radius), runs.spans.get_mut(index))
-                    {
+                    if let (Some(span), Some(slot)) = (
+                        camera.column_span(centre, radius),
+                        runs.spans.get_mut(index),
+                    ) {
                         *slot = span;
                         runs.bounded |= bits::bit(index);
                     }
