@@ -106,32 +106,42 @@ emulate() {
     fi
 }
 
-# field NAME KEY: a number from the emulator's report.
+# field FILE KEY: a number from a report in $out.
 field() {
     node -e 'const r = JSON.parse(require("fs").readFileSync(process.argv[1], "utf8"));
-             console.log(r[process.argv[2]]);' "$out/$1.json" "$2"
+             console.log(r[process.argv[2]]);' "$out/$1" "$2"
 }
 
 echo "pico.sh: running the program in rp2040js"
 emulate program
 status=0
-node "$emulator/decode.mjs" "$out/program.bin" "$out/expected.rgb565" "$png" || status=$?
+node "$emulator/decode.mjs" "$out/program.bin" "$out/expected.rgb565" "$png" "$out/bands.json" ||
+    status=$?
 if ((status != 0)); then
     echo "pico.sh: the emulated panel's picture is not the host's (see above)" >&2
     exit 1
 fi
 
-frame=$(field program frameCycles)
-rom=$(field program frameRomCycles)
-total=$(field program cycles)
-wall=$(field program wallSeconds)
+frame=$(field program.json frameCycles)
+rom=$(field program.json frameRomCycles)
+total=$(field program.json cycles)
+wall=$(field program.json wallSeconds)
 if [[ $frame == null ]]; then
     echo "pico.sh: the program's two timer readings (the frame's start and end) were not found" >&2
     exit 1
 fi
-awk -v f="$frame" -v r="$rom" -v t="$total" -v w="$wall" 'BEGIN {
-    printf "pico.sh: the frame (rendering and sending, single core): %d cycles, %.1f ms at 133 MHz, %.1f ms at 125 MHz (the program'"'"'s clock)\n", f, f / 133e3, f / 125e3
-    printf "pico.sh: of which %d cycles (%.2f%%) in the stand-in ROM routines\n", r, 100 * r / f
+# The two-core program's frame, estimated from this run's bands (scripts/pico/estimate.mjs).
+node "$emulator/estimate.mjs" "$out/program.json" "$out/bands.json" >"$out/estimate.json"
+render=$(field estimate.json renderCycles)
+send=$(field estimate.json sendCycles)
+two=$(field estimate.json twoCores)
+awk -v f="$frame" -v r="$rom" -v t="$total" -v w="$wall" -v render="$render" -v send="$send" \
+    -v two="$two" 'BEGIN {
+    ms = "%.1f ms at 133 MHz, %.1f ms at 125 MHz (the program'"'"'s clock)"
+    printf "pico.sh: the frame, single core, measured: %d cycles, " ms "\n", f, f / 133e3, f / 125e3
+    printf "pico.sh:   rendering %d cycles, sending %d (with the commands'"'"' wire time)\n", render, send
+    printf "pico.sh:   %d cycles (%.2f%%) in the stand-in ROM routines\n", r, 100 * r / f
+    printf "pico.sh: the frame, two cores, estimated from it: %d cycles, " ms "\n", two, two / 133e3, two / 125e3
     printf "pico.sh: %d cycles emulated in all (start-up delays included) in %.1f s\n", t, w
 }'
 

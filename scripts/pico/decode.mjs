@@ -1,7 +1,7 @@
 // Reads what the Pico program sent its display (a stream from scripts/pico/run.mjs) as the
 // ST7789 would, and compares the picture with the host's render of the same scene.
 //
-//   node scripts/pico/decode.mjs STREAM.bin EXPECTED.rgb565 PICTURE.png
+//   node scripts/pico/decode.mjs STREAM.bin EXPECTED.rgb565 PICTURE.png [BANDS.json]
 //
 // The decoder is a model of the controller's side of the 4-line SPI bus: a byte counts only
 // while chip select is low; with data/command low it is a command, with it high a parameter of
@@ -27,7 +27,8 @@
 //      draws over the finished frame; every pixel outside the rectangle written after the
 //      frame was complete must still equal the host's. The rectangle is reported.
 // PICTURE.png gets the end picture (as the memory holds it; an IPS panel, which the program
-// sets to invert colours, shows it so).
+// sets to invert colours, shows it so). BANDS.json, if named, gets the cycle counts at each
+// band's first command byte and last pixel byte, for scripts/pico/estimate.mjs.
 //
 // Exit status: 0 if both comparisons find no difference, 1 if a pixel differs, 2 if the stream
 // breaks the protocol or the frame is never complete.
@@ -35,7 +36,7 @@
 import { readFileSync, writeFileSync } from 'node:fs';
 import { deflateSync } from 'node:zlib';
 
-const [streamPath, expectedPath, pngPath] = process.argv.slice(2);
+const [streamPath, expectedPath, pngPath, bandsPath] = process.argv.slice(2);
 if (!streamPath || !expectedPath || !pngPath) {
   console.error('usage: node decode.mjs STREAM.bin EXPECTED.rgb565 PICTURE.png');
   process.exit(2);
@@ -217,10 +218,23 @@ function picture() {
   return pixels;
 }
 
+// The cycles the program spent sending the bands (the full-width windows): from each window's
+// first command byte (CASET) to its last pixel byte, which includes packing the band into the
+// DMA buffer. The emulated DMA moves a band at once, so the wire's time is not in it.
+const bands = { count: 0, cycles: 0, first: null, last: null, each: [] };
+let windowStart = null;
+let lastByteCycles = 0;
+
 let unselected = 0;
-for (let i = 0; i + 1 < stream.length; i += 2) {
+for (let i = 0; i + 5 < stream.length; i += 6) {
   const pins = stream[i];
   const byte = stream[i + 1];
+  const cycles = stream.readUInt32LE(i + 2);
+  if (!(pins & 1) && byte === 0x2a) {
+    endBand();
+    windowStart = cycles;
+  }
+  lastByteCycles = cycles;
   if (!(pins & 2)) {
     unselected++;
     continue;
@@ -241,7 +255,21 @@ for (let i = 0; i + 1 < stream.length; i += 2) {
     fail('a data byte before any command');
   }
 }
+endBand();
 finishCommand();
+
+// Called at each CASET and at the end: closes the window before, if it was a band.
+function endBand() {
+  const band = writing && window.xe - window.xs + 1 === WIDTH;
+  if (band && windowStart !== null) {
+    bands.count++;
+    bands.cycles += lastByteCycles - windowStart;
+    bands.first ??= windowStart;
+    bands.last = lastByteCycles;
+    bands.each.push({ start: windowStart, end: lastByteCycles });
+  }
+  windowStart = null;
+}
 
 if (unselected) fail(`${unselected} bytes sent with chip select high`);
 if (!frame) fail(`the frame is not complete: ${visibleWritten} of ${WIDTH * HEIGHT} pixels written`);
@@ -280,12 +308,21 @@ console.log(
     `colours ${inverted ? 'inverted' : 'not inverted'}, display ${displayOn ? 'on' : 'off'}; ` +
     `${pixelsWritten} pixels written`,
 );
+if (bands.count) {
+  console.log(
+    `decode: ${bands.count} bands, from the first's CASET to the last's last pixel ` +
+      `${bands.last - bands.first} cycles, of which ${bands.cycles} sending them ` +
+      `(the address window, packing, starting the DMA)`,
+  );
+}
 console.log(`decode: the frame, complete: ${frameDiffer} of ${WIDTH * HEIGHT} pixels differ from the host's`);
 console.log(`decode: written after it (the frame-time text): ${text}`);
 console.log(
   `decode: the end picture: ${outsideDiffer} pixels differ outside that rectangle, ` +
     `${insideDiffer} inside it (the text)`,
 );
+
+if (bandsPath) writeFileSync(bandsPath, JSON.stringify(bands.each));
 
 // --- The end picture as a PNG: 8-bit RGB, no filter -------------------------------------------
 

@@ -3,9 +3,9 @@
 //
 //   node scripts/pico/run.mjs PROGRAM.elf STREAM.bin
 //
-// STREAM.bin gets two bytes per byte on the SPI bus, in order: the pins' levels as it left
-// (bit 0: data/command, GP16, high for data; bit 1: chip select, GP17, low for selected), then
-// the byte. scripts/pico/decode.mjs reads it as the ST7789 would. On stdout, one line of JSON:
+// STREAM.bin gets six bytes per byte on the SPI bus, in order: the pins' levels as it left
+// (bit 0: data/command, GP16, high for data; bit 1: chip select, GP17, low for selected), the
+// byte, and the core's cycle count then (32 bits, little-endian). scripts/pico/decode.mjs reads it as the ST7789 would. On stdout, one line of JSON:
 // the cycles the program ran, the cycles between its two readings of the frame timer (the
 // frame), the bytes sent, and why the run stopped.
 //
@@ -225,7 +225,9 @@ const pins = mcu.gpio;
 spi.onTransmit = (value) => {
   const dc = pins[DC_PIN].value === GPIOPinState.High ? 1 : 0;
   const selected = pins[CS_PIN].value === GPIOPinState.Low ? 2 : 0;
-  stream.push(dc | selected, value & 0xff);
+  const cycles = core.cycles;
+  stream.push(dc | selected, value & 0xff, cycles & 0xff, (cycles >>> 8) & 0xff);
+  stream.push((cycles >>> 16) & 0xff, (cycles >>> 24) & 0xff);
   spi.completeTransmit(0);
 };
 
@@ -279,7 +281,11 @@ for (const read of timerReads) {
 }
 const frame =
   clusters.length === 2
-    ? { cycles: clusters[1][0][0] - clusters[0][0][0], rom: clusters[1][0][1] - clusters[0][0][1] }
+    ? {
+        start: clusters[0][0][0],
+        cycles: clusters[1][0][0] - clusters[0][0][0],
+        rom: clusters[1][0][1] - clusters[0][0][1],
+      }
     : null;
 console.log(
   JSON.stringify({
@@ -288,10 +294,11 @@ console.log(
     pc: `0x${core.PC.toString(16)}`,
     cycles: core.cycles,
     timerReadings: clusters.length,
+    frameStart: frame?.start ?? null,
     frameCycles: frame?.cycles ?? null,
     frameRomCycles: frame?.rom ?? null,
     romCycles,
-    spiBytes: stream.length / 2,
+    spiBytes: stream.length / 6,
     wallSeconds: Math.round(wallSeconds * 10) / 10,
   }),
 );

@@ -14,6 +14,10 @@
 //! the hand-over is safe Rust: a buffer is always owned by exactly one core. A core waiting
 //! for a slot sleeps in `wfe`; the other core's `sev` after filling one wakes it. A band is
 //! packed into the DMA buffer as it is sent, so core 1 gets its buffer back at once.
+//!
+//! With the `single-core` feature core 0 renders every band itself and core 1 is never
+//! started; the bands, the DMA interface and the driver are the same. That is the build
+//! scripts/pico.sh runs in an emulator with one core and checks pixel for pixel.
 
 #![no_std]
 #![no_main]
@@ -182,9 +186,9 @@ fn main() -> ! {
         start
     };
 
-    // One core renders every band, through the same bands, DMA interface and driver: the
-    // program as an emulator with a single core runs it (scripts/pico.sh), and a measure of
-    // what the second core saves.
+    // Core 0 renders every band and sends it through the same DMA interface and driver: the
+    // build an emulator with one core can run (scripts/pico.sh), and the measure of what the
+    // second core saves.
     #[cfg(feature = "single-core")]
     let start = {
         let start = timer.get_counter();
