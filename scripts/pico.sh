@@ -101,8 +101,14 @@ emulate() {
     fi
     if ! grep -q '"stopped":"asleep"' "$out/$name.json"; then
         echo "pico.sh: $name.elf did not finish its frame in the emulator:" >&2
-        sed 's/^/    /' "$out/$name.json" "$out/$name.log" >&2
+        sed 's/^/    /' "$out/$name.json" >&2
+        head -n 20 "$out/$name.log" | sed 's/^/    /' >&2
         exit 1
+    fi
+    # rp2040js warns of registers it does not model; the program should touch none.
+    if [[ -s $out/$name.log ]]; then
+        echo "pico.sh: rp2040js warned while running $name.elf ($out/$name.log):"
+        sort "$out/$name.log" | uniq -c | head -n 20 | sed 's/^/    /'
     fi
 }
 
