@@ -144,10 +144,13 @@ two=$(field estimate.json twoCores)
 awk -v f="$frame" -v r="$rom" -v t="$total" -v w="$wall" -v render="$render" -v send="$send" \
     -v two="$two" 'BEGIN {
     ms = "%.1f ms at 133 MHz, %.1f ms at 125 MHz (the program'"'"'s clock)"
-    printf "pico.sh: the frame, single core, measured: %d cycles, " ms "\n", f, f / 133e3, f / 125e3
-    printf "pico.sh:   rendering %d cycles, sending %d (with the commands'"'"' wire time)\n", render, send
+    printf "pico.sh: the frame, single core, measured: %d cycles, " ms "\n",
+        f, f / 133e3, f / 125e3
+    printf "pico.sh:   rendering %d cycles, sending %d (with the commands'"'"' wire time)\n",
+        render, send
     printf "pico.sh:   %d cycles (%.2f%%) in the stand-in ROM routines\n", r, 100 * r / f
-    printf "pico.sh: the frame, two cores, estimated from it: %d cycles, " ms "\n", two, two / 133e3, two / 125e3
+    printf "pico.sh: the frame, two cores, estimated from it: %d cycles, " ms "\n",
+        two, two / 133e3, two / 125e3
     printf "pico.sh: %d cycles emulated in all (start-up delays included) in %.1f s\n", t, w
 }'
 

@@ -272,7 +272,9 @@ function endBand() {
 }
 
 if (unselected) fail(`${unselected} bytes sent with chip select high`);
-if (!frame) fail(`the frame is not complete: ${visibleWritten} of ${WIDTH * HEIGHT} pixels written`);
+if (!frame) {
+  fail(`the frame is not complete: ${visibleWritten} of ${WIDTH * HEIGHT} pixels written`);
+}
 const end = picture();
 
 // --- Compare ----------------------------------------------------------------------------------
@@ -315,7 +317,10 @@ if (bands.count) {
       `(the address window, packing, starting the DMA)`,
   );
 }
-console.log(`decode: the frame, complete: ${frameDiffer} of ${WIDTH * HEIGHT} pixels differ from the host's`);
+console.log(
+  `decode: the frame, complete: ${frameDiffer} of ${WIDTH * HEIGHT} pixels differ ` +
+    `from the host's`,
+);
 console.log(`decode: written after it (the frame-time text): ${text}`);
 console.log(
   `decode: the end picture: ${outsideDiffer} pixels differ outside that rectangle, ` +

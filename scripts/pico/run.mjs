@@ -5,9 +5,10 @@
 //
 // STREAM.bin gets six bytes per byte on the SPI bus, in order: the pins' levels as it left
 // (bit 0: data/command, GP16, high for data; bit 1: chip select, GP17, low for selected), the
-// byte, and the core's cycle count then (32 bits, little-endian). scripts/pico/decode.mjs reads it as the ST7789 would. On stdout, one line of JSON:
-// the cycles the program ran, the cycles between its two readings of the frame timer (the
-// frame), the bytes sent, and why the run stopped.
+// byte, and the core's cycle count then (32 bits, little-endian). scripts/pico/decode.mjs
+// reads it as the ST7789 would. On stdout, one line of JSON: the cycles the program ran, the
+// cycles between its two readings of the frame timer (the frame) and in the stand-in ROM, the
+// bytes sent, and why the run stopped.
 //
 // rp2040js emulates one Cortex-M0+ core (core 1 never runs) and ships no boot ROM. So this
 // script starts the core where the boot ROM and the second-stage boot loader would leave it:
