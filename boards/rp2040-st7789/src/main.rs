@@ -223,9 +223,9 @@ fn main() -> ! {
     }
 }
 
-#[cfg(not(feature = "single-core"))]
 /// Core 1: renders the odd bands, alternating between its two buffers, and leaves each for
 /// core 0 to send.
+#[cfg(not(feature = "single-core"))]
 fn core1(camera: &Camera, buffers: [&'static mut Band; 2]) -> ! {
     let mut fresh = buffers.map(Some);
     for (i, band) in (1..BANDS).step_by(2).enumerate() {
@@ -268,8 +268,8 @@ fn send_band<D: DrawTarget<Color = Rgb565>>(
     display.fill_contiguous(&area, colours)
 }
 
-#[cfg(not(feature = "single-core"))]
 /// Leaves `buffer` in `slot` and wakes the other core.
+#[cfg(not(feature = "single-core"))]
 fn put(slot: &Slot, buffer: &'static mut Band) {
     let previous = critical_section::with(|cs| slot.borrow_ref_mut(cs).replace(buffer));
     // Each slot is emptied before the protocol fills it again.
@@ -277,8 +277,8 @@ fn put(slot: &Slot, buffer: &'static mut Band) {
     cortex_m::asm::sev();
 }
 
-#[cfg(not(feature = "single-core"))]
 /// Takes the buffer in `slot`, sleeping until there is one.
+#[cfg(not(feature = "single-core"))]
 fn take(slot: &Slot) -> &'static mut Band {
     loop {
         if let Some(buffer) = critical_section::with(|cs| slot.borrow_ref_mut(cs).take()) {
