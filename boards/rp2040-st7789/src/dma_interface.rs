@@ -154,7 +154,7 @@ where
         let mut buffer = self.take_free()?;
         let mut filled = 0;
         for pixel in pixels {
-            for byte in pixel {
+            for byte in wire_order(pixel) {
                 buffer[filled] = byte;
                 filled += 1;
                 if filled == N {
@@ -186,5 +186,18 @@ where
             self.write(&pixel)?;
         }
         self.release()
+    }
+}
+
+/// A pixel's bytes in the order they go on the wire: as mipidsi gives them (for `Rgb565`, the
+/// high byte first, as the ST7789 takes it). The `fault-byte-swap` feature reverses them, a
+/// fault that scripts/pico.sh must see in the emulated panel's picture.
+fn wire_order<const M: usize>(pixel: [u8; M]) -> [u8; M] {
+    if cfg!(feature = "fault-byte-swap") {
+        let mut swapped = pixel;
+        swapped.reverse();
+        swapped
+    } else {
+        pixel
     }
 }
