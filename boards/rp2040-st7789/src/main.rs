@@ -6,8 +6,8 @@
 //! every band to the display in order, converted to `Rgb565` on the way. The sending is by
 //! DMA (`dma_interface`): core 0 packs a band's bytes into a DMA buffer, starts the transfer
 //! and goes back to rendering while the band is on the wire. It waits for the wire only when
-//! the next band's address window is due before the last transfer has ended (a band takes
-//! about 0.3 ms on the wire, against about 16 ms to render, see the README).
+//! the next band's address window is due before the last transfer has ended (a band spends
+//! far less time on the wire than in rendering: the README has the figures).
 //!
 //! Core 1's two buffers travel between the cores through four one-buffer slots (one per
 //! buffer for "rendered", one per buffer for "sent"), each a `critical_section::Mutex`, so
