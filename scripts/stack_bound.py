@@ -76,7 +76,7 @@ def frame_and_calls(name, body, words, starts):
         op = op.split(".")[0] if op.startswith(("push", "sub", "add", "vpush", "stmdb", "bl", "b")) else op
         if op in ("push", "vpush") or (op == "stmdb" and args.startswith("sp!")):
             frame += registers(args)
-        elif op == "sub" and re.match(r"sp,\s*(sp,\s*)?#", args):
+        elif op in ("sub", "subw") and re.match(r"sp,\s*(sp,\s*)?#", args):
             frame += int(re.search(r"#(-?\d+)", args).group(1))
         elif op == "add" and re.match(r"sp,\s*(sp,\s*)?r\d+$", args.split("@")[0].strip()):
             reg = args.split("@")[0].strip().split(",")[-1].strip()
