@@ -69,33 +69,40 @@ def disassemble(elf, objdump):
     return functions, words
 
 
+# Moves the stack pointer down by an immediate: Thumb's `sub sp, #n` and `sub.w sp, sp, #n`,
+# RISC-V's `addi sp, sp, -n` (objdump may write it `add`) and `c.addi16sp sp, -n`.
+SUB_SP = re.compile(r"^(sub|subw)$")
+ADD_SP_NEGATIVE = re.compile(r"^sp,\s*(sp,\s*)?-(\d+)")
+# A call or a branch that may leave the function: Arm's `b`, `bl`, `blx` and conditional
+# branches, RISC-V's `j`, `jal`, `jalr`, `call`, `tail` and compressed forms. Only those naming
+# a `<label>` are followed; an in-function target is left out below.
+BRANCH = re.compile(r"^(b[a-z]*|j|jal|jalr|call|tail|c\.j|c\.jal|c\.jalr|c\.b[a-z]+)$")
+
+
 def frame_and_calls(name, body, words, starts):
+    """The bytes `body` moves the stack pointer down by, the functions it calls or branches
+    to, and how many calls it makes through a register."""
     frame, calls, unknown = 0, set(), 0
     loaded = {}  # register -> constant loaded from the literal pool
-    for address, op, args in body["lines"]:
-        op = op.split(".")[0] if op.startswith(("push", "sub", "add", "vpush", "stmdb", "bl", "b")) else op
-        if op in ("push", "vpush") or (op == "stmdb" and args.startswith("sp!")):
-            frame += registers(args)
-        elif op in ("sub", "subw") and re.match(r"sp,\s*(sp,\s*)?#", args):
-            frame += int(re.search(r"#(-?\d+)", args).group(1))
-        elif op == "add" and re.match(r"sp,\s*(sp,\s*)?r\d+$", args.split("@")[0].strip()):
-            reg = args.split("@")[0].strip().split(",")[-1].strip()
-            value = loaded.get(reg)
+    for _, op, args in body["lines"]:
+        op = re.sub(r"\.[wn]$", "", op)  # Thumb-2's width suffixes
+        code = args.split("@")[0].strip()  # without objdump's comment
+        if op in ("push", "vpush") or (op == "stmdb" and code.startswith("sp!")):
+            frame += registers(code)
+        elif SUB_SP.match(op) and re.match(r"sp,\s*(sp,\s*)?#", code):
+            frame += int(re.search(r"#(-?\d+)", code).group(1))
+        elif op in ("add", "addi", "c.addi", "c.addi16sp") and ADD_SP_NEGATIVE.match(code):
+            frame += int(ADD_SP_NEGATIVE.match(code).group(2))
+        elif op == "add" and re.match(r"sp,\s*(sp,\s*)?r\d+$", code):
+            # A large frame on the Cortex-M0: a negative constant from the literal pool.
+            value = loaded.get(code.split(",")[-1].strip())
             if value is not None and value & 0x80000000:
                 frame += (1 << 32) - value
         elif op == "ldr":
-            m = re.match(r"(r\d+),\s*\[pc.*@\s*\(([0-9a-f]+)", args) or re.match(
-                r"(r\d+),\s*\[pc.*;\s*\(([0-9a-f]+)", args
-            )
+            m = re.match(r"(r\d+),\s*\[pc.*@\s*\(([0-9a-f]+)", args)
             if m and int(m.group(2), 16) in words:
                 loaded[m.group(1)] = words[int(m.group(2), 16)]
-        elif op in ("add", "addi", "c.addi", "c.addi16sp") and re.match(r"sp,\s*sp,\s*-\d+", args):
-            frame += int(re.search(r"-(\d+)", args).group(1))
-        elif op == "c.addi16sp" and re.match(r"sp,\s*-\d+", args):
-            frame += int(re.search(r"-(\d+)", args).group(1))
-        if op in ("bl", "blx", "jal", "jalr", "call", "tail", "j", "b", "c.j", "c.jal") or (
-            op.startswith("b") and op not in ("bic", "bics", "bkpt")
-        ):
+        if BRANCH.match(op) and op not in ("bic", "bics", "bkpt", "bfi", "bfc"):
             t = TARGET.search(args)
             if t:
                 target_name = re.sub(r"\+0x[0-9a-f]+$", "", t.group(2))
@@ -137,7 +144,7 @@ def main():
             calls, unknown = set(), 0
         best = (0, [], 0)
         total_unknown = unknown
-        for callee in calls:
+        for callee in sorted(calls):  # ties resolved the same way every run
             b = bound(callee)
             total_unknown += b[2]
             if b[0] > best[0]:
