@@ -195,6 +195,9 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// [`Scene::matte_loop`]'s pixels, without its reach test or ray, and with each light's
     /// cosine alone ([`Axis`]). Its own loop, which keeps the values the columns share in
     /// registers.
+    // Out of line: its values stay off `shade_matte_run`'s stack frame, which lies under
+    // every shadow ray of the run's other stretches; the call is one a stretch.
+    #[inline(never)]
     fn lit_stretch(
         &self,
         camera: &Camera,

@@ -39,6 +39,10 @@ pub(crate) struct Runs<'a, const N: usize, const L: usize> {
 
 impl<'a, const N: usize, const L: usize> Runs<'a, N, L> {
     /// The runs of display row `row` of `camera`'s view of `scene`.
+    // Out of line: the culling's temporaries (each sphere's ball in the row's plane and its
+    // span) are needed once a row, and in line they would sit in the row's stack frame under
+    // every pixel's shading; the call is one a row.
+    #[inline(never)]
     pub(crate) fn new(scene: &'a Scene<N, L>, camera: &Camera, row: u16) -> Self {
         // Objects past the 64th have no bit of their own and are always tried. Bit 63 then
         // stands for them as well as for object 63, so it is never cleared: no run is taken
