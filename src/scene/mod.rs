@@ -2,12 +2,10 @@
 
 pub(crate) mod background;
 pub(crate) mod colour;
-pub(crate) mod cone;
 pub(crate) mod hit;
 pub(crate) mod light;
 pub(crate) mod linear;
 pub(crate) mod material;
-pub(crate) mod shadowers;
 
 pub use background::Background;
 pub use colour::Rgb;
@@ -22,7 +20,7 @@ use crate::geometry::shape::Shape;
 use crate::geometry::sphere::Sphere;
 use crate::numbers::fx::Fx;
 use crate::numbers::vec3::Vec3;
-use crate::scene::cone::ShadowCone;
+use crate::render::accel::shadow_caches::ShadowCaches;
 
 /// A shape and what it is made of.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -120,11 +118,9 @@ pub struct Scene<const N: usize, const L: usize = 4> {
     /// The lights in `lights[..light_count]`.
     lights: [Light; L],
     light_count: usize,
-    /// `cones[light][object]`: what each light sees of each sphere, to skip shadow tests.
-    cones: [[ShadowCone; N]; L],
-    /// `shadowers[light][object]`: the objects a shadow ray towards each light from each
-    /// object may meet (bit `i` for object `i`, below 32).
-    shadowers: [[u32; N]; L],
+    /// What the shadow rays' speed-ups keep, worked out again on every change of an object
+    /// or a light: private to `render/accel/`.
+    shadow_caches: ShadowCaches<N, L>,
     ambient: Fx,
     background: Background,
     shadows: bool,
@@ -166,8 +162,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
             object_count: 0,
             lights: [light; L],
             light_count: 0,
-            cones: [[ShadowCone::ALWAYS; N]; L],
-            shadowers: [[!0; N]; L],
+            shadow_caches: ShadowCaches::NONE,
             ambient,
             background,
             shadows: true,
@@ -223,39 +218,20 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         Ok(index)
     }
 
-    /// Works out again every light's shadow cone of object `index` (which must exist), and
-    /// which objects can shadow which, since that depends on it.
+    /// Works out again what the shadow rays' speed-ups keep of object `index` (which must
+    /// exist).
     const fn refresh_object_cones(&mut self, index: usize) {
-        let mut light = 0;
-        while light < self.light_count {
-            self.cones[light][index] =
-                ShadowCone::new(self.lights[light].position, &self.objects[index].shape);
-            self.refresh_shadowers(light);
-            light += 1;
-        }
-    }
-
-    /// Works out again light `index`'s shadow cone of every object, and which objects can
-    /// shadow which from it (the light must exist).
-    const fn refresh_light_cones(&mut self, index: usize) {
-        let mut object = 0;
-        while object < self.object_count {
-            self.cones[index][object] =
-                ShadowCone::new(self.lights[index].position, &self.objects[object].shape);
-            object += 1;
-        }
-        self.refresh_shadowers(index);
-    }
-
-    /// Works out again which objects can shadow each object from light `light`.
-    const fn refresh_shadowers(&mut self, light: usize) {
         let objects = self.objects.split_at(self.object_count).0;
-        let position = self.lights[light].position;
-        let mut object = 0;
-        while object < objects.len() {
-            self.shadowers[light][object] = shadowers::shadowers(position, object, objects);
-            object += 1;
-        }
+        let lights = self.lights.split_at(self.light_count).0;
+        self.shadow_caches.refresh_object(index, objects, lights);
+    }
+
+    /// Works out again what the shadow rays' speed-ups keep of light `index` (which must
+    /// exist).
+    const fn refresh_light_cones(&mut self, index: usize) {
+        let objects = self.objects.split_at(self.object_count).0;
+        let lights = self.lights.split_at(self.light_count).0;
+        self.shadow_caches.refresh_light(index, objects, lights);
     }
 
     /// Replaces object `index` (its shape, its material or both), keeping its place: the
@@ -390,16 +366,9 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         self.present
     }
 
-    /// `cones[light][object]`: each light's view of each object, for shadow rays to skip
-    /// what cannot block them.
-    pub(crate) const fn cones(&self) -> &[[ShadowCone; N]; L] {
-        &self.cones
-    }
-
-    /// `shadowers[light][object]`: the objects (below 32) a shadow ray towards each light
-    /// from a hit on each object may meet.
-    pub(crate) const fn shadowers(&self) -> &[[u32; N]; L] {
-        &self.shadowers
+    /// What the shadow rays' speed-ups keep (`render/accel/shadow_caches.rs`).
+    pub(crate) const fn shadow_caches(&self) -> &ShadowCaches<N, L> {
+        &self.shadow_caches
     }
 }
 

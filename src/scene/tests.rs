@@ -184,7 +184,13 @@ fn only_objects_that_cannot_shadow_a_receiver_are_skipped() {
                     blocked += every as u32;
                 }
             }
-            skipped += (scene.shadowers()[0][receiver].count_ones() + 1 < 10) as u32;
+            skipped += (scene
+                .shadow_caches()
+                .shadowers(0, receiver)
+                .unwrap()
+                .count_ones()
+                + 1
+                < 10) as u32;
         }
     }
     assert!(

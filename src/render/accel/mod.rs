@@ -11,10 +11,13 @@
 //!   additions and shaded in one loop, without rays;
 //! - `sky`: a run that can meet nothing, under a gradient sky, from one component of each
 //!   ray's direction, without rays;
-//!
-//! The shadow rays' speed-ups, each light's cone around each sphere and the set of objects that
-//! can shadow each object from each light, are caches the scene keeps up to date as objects
-//! and lights are added: `scene/cone.rs` and `scene/shadowers.rs`.
+//! - `shade`: a first hit's light, each shadow ray trying only the objects the sets below
+//!   leave, and a highlight formed only where it is not 0;
+//! - `shadow_cone`: each light's cone around each sphere, which a shadow ray outside it cannot
+//!   meet;
+//! - `shadowers`: for each light and object, the objects that can shadow it;
+//! - `shadow_caches`: the two kept in the scene, worked out again whenever an object or a
+//!   light changes (the scene knows no more of them than that).
 
 pub(crate) mod camera_rows;
 pub(crate) mod cull;
@@ -22,6 +25,9 @@ pub(crate) mod matte;
 pub(crate) mod row_rays;
 pub(crate) mod runs;
 pub(crate) mod shade;
+pub(crate) mod shadow_caches;
 pub(crate) mod shadow_columns;
+pub(crate) mod shadow_cone;
 pub(crate) mod shadow_rows;
+pub(crate) mod shadowers;
 pub(crate) mod sky;

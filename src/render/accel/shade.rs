@@ -2,9 +2,9 @@
 //! the objects that can block it, and a highlight formed only where it is not 0.
 //!
 //! A shadow ray towards light `i` from object `j` tries only the objects that can shadow `j`
-//! from `i` (`scene/shadowers.rs`), and of those, on a plane, only the ones that can shadow
+//! from `i` (`accel/shadowers.rs`), and of those, on a plane, only the ones that can shadow
 //! the row's hits on it (`accel/shadow_rows.rs`); it skips a sphere whose cone from the light
-//! it lies outside (`scene/cone.rs`). Every set holds each object that can block the ray, and
+//! it lies outside (`accel/shadow_cone.rs`). Every set holds each object that can block the ray, and
 //! a cone each ray that can meet its sphere, so the answer is the brute-force one. A highlight
 //! whose cosine must come out below the material's least lit one (`render/highlight.rs`), or
 //! does, is 0 without its half vector or its power. So a pixel here is bit for bit the plain path's.
@@ -122,7 +122,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// that come to the whole test: it tries only the objects that can shadow object
     /// `leaving` from that light (`Scene::shadowers`) and are in `among` (bit `i` for object
     /// `i`, which must hold every object that can block the ray in scenes of up to 32
-    /// objects), and skips the spheres outside their [`ShadowCone`](crate::scene::cone::ShadowCone).
+    /// objects), and skips the spheres outside their [`ShadowCone`](crate::render::accel::shadow_cone::ShadowCone).
     pub(crate) fn occluded_among(
         &self,
         from: Vec3,
@@ -132,7 +132,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         light: usize,
         among: u32,
     ) -> bool {
-        let Some(cones) = self.cones().get(light) else {
+        let Some(cones) = self.shadow_caches().cones(light) else {
             // Not one of the scene's lights: no cones to go by.
             return self.occluded(from, dir, distance_squared, leaving);
         };
@@ -169,8 +169,8 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// those that can shadow `leaving` from it. `None` where every object is tried: scenes
     /// of more than 32 objects, or a light that is not the scene's.
     pub(crate) fn walked(&self, leaving: usize, light: usize) -> Option<u32> {
-        let set = self.shadowers().get(light).and_then(|s| s.get(leaving));
-        set.copied().filter(|_| self.objects().len() <= 32)
+        let set = self.shadow_caches().shadowers(light, leaving);
+        set.filter(|_| self.objects().len() <= 32)
     }
 
     /// The objects a shadow ray towards light `light_index` tries, `sets[light_index]`, or
