@@ -78,8 +78,8 @@
 //! | --- | --- |
 //! | row buffer, `[Rgb; 320]` | 960 |
 //! | the [`Viewport`] (two references and a point, 32-bit target) | 16 |
-//! | stack below [`Viewport::render`], the deepest chip and scene | under 4 KB |
-//! | **total** | **under 5 KB** |
+//! | stack below [`Viewport::render`], the deepest chip and scene | under 3.5 KB |
+//! | **total** | **under 4.5 KB** |
 //!
 //! A framebuffer for the same display would take 230 400 bytes. The scene (`Scene<8>`, about
 //! 1 KB with its shadow cones) and camera (56 bytes) are the caller's, wherever it keeps
@@ -91,7 +91,7 @@
 //! (`firmware/src/bin/draw.rs`, run by `scripts/firmware.sh`), through [`Viewport::render`]
 //! and through a [`Picture`], for the demo and the classic scene; the figures are the README's
 //! table *Stack below a draw*, and the deepest, the Cortex-M0's render of the classic scene
-//! (mirrors, glass, highlights and three lights' shadows), is under 4 KB. A picture adds its
+//! (mirrors, glass, highlights and three lights' shadows), is under 3.5 KB. A picture adds its
 //! row buffer and a few words to that. Nothing on the stack is sized by the picture, and
 //! nothing recurses (mirror and glass rays are a loop), so neither the display's size nor the
 //! mirror depth changes the figure. The display's `fill_contiguous` is included; it runs
