@@ -139,6 +139,12 @@ pub enum Error {
         /// The buffer's length.
         got: usize,
     },
+    /// A progressive render's coarsest spacing that is not a power of two from 1 to
+    /// [`MAX_SPACING`](crate::MAX_SPACING) pixels.
+    PassSpacing {
+        /// The spacing asked for.
+        spacing: u16,
+    },
 }
 
 /// The quantities fixray checks, as named by [`Error`].
@@ -356,6 +362,7 @@ impl fmt::Debug for Error {
             Error::BufferLength { needed, got } => {
                 ("BufferLength", &[("needed", needed), ("got", got)])
             }
+            Error::PassSpacing { spacing } => ("PassSpacing", &[("spacing", spacing)]),
         };
         if fields.is_empty() {
             return f.write_str(name);
@@ -456,6 +463,12 @@ impl fmt::Display for Error {
             Error::BufferLength { needed, got } => write!(
                 f,
                 "row buffer holds {got} pixels where a row of the picture has {needed}"
+            ),
+            Error::PassSpacing { spacing } => write!(
+                f,
+                "a progressive render's coarsest spacing is {spacing} pixels, not a power of two \
+                 from 1 to {}",
+                crate::MAX_SPACING
             ),
         }
     }
@@ -574,6 +587,10 @@ mod tests {
                     got: 39,
                 },
                 "BufferLength { needed: 40, got: 39 }",
+            ),
+            (
+                Error::PassSpacing { spacing: 3 },
+                "PassSpacing { spacing: 3 }",
             ),
         ];
         for (error, text) in rest {

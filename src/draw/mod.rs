@@ -103,6 +103,7 @@ mod color;
 mod dither;
 mod error;
 mod framebuffer;
+mod passes;
 mod picture;
 mod viewport;
 

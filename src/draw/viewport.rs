@@ -55,9 +55,9 @@ use crate::scene::colour::Rgb;
 /// ```
 #[derive(Debug, Clone, Copy)]
 pub struct Viewport<'a, const N: usize, const L: usize = 4> {
-    scene: &'a Scene<N, L>,
-    camera: &'a Camera,
-    top_left: Point,
+    pub(super) scene: &'a Scene<N, L>,
+    pub(super) camera: &'a Camera,
+    pub(super) top_left: Point,
 }
 
 impl<'a, const N: usize, const L: usize> Viewport<'a, N, L> {

@@ -24,11 +24,15 @@ const fn knot(value: u128) -> u32 {
 /// The seed of a Newton step for `x` in Q0.32, whose top byte is at least `first`: linear
 /// interpolation between `knots[j]` and `knots[j + 1]`, for the knot `j` below `x` and the next
 /// 16 bits of `x` past it. The knots fall by less than 2²⁴ from one to the next, so the step,
-/// cut to 16 bits, times that fraction fits 32 bits.
+/// cut to 16 bits, times that fraction fits 32 bits. An `x` below the table (not reached: the
+/// callers' `x` is a mantissa with its top bit set) takes its first knot, not a panic.
 #[inline]
 const fn between_knots(knots: &[u32], first: u32, x: u32) -> u32 {
-    let j = ((x >> 24) - first) as usize;
+    let j = (x >> 24).saturating_sub(first) as usize;
     let fraction = (x >> 8) & 0xffff;
+    if j + 1 >= knots.len() {
+        return knots[0];
+    }
     let (below, above) = (knots[j], knots[j + 1]);
     below - ((((below - above) >> 8) * fraction) >> 8)
 }

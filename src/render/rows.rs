@@ -51,12 +51,19 @@ pub fn render_row<const N: usize, const L: usize>(
         scene,
         camera,
         row,
-        0..camera.cols(),
+        (0..camera.cols(), 0),
         true,
         true,
         |first, end, cast, shadowers| {
             let cols = first as usize..end as usize;
-            paint((scene, camera, row, first), out, cols, cast, shadowers, sky)
+            paint(
+                (scene, camera, row, first, 1),
+                out,
+                cols,
+                cast,
+                shadowers,
+                sky,
+            )
         },
     );
     Ok(())
@@ -68,7 +75,7 @@ pub fn render_row<const N: usize, const L: usize>(
 // move the loop's values out of the registers it clobbers.
 #[inline(always)]
 fn paint<const N: usize, const L: usize>(
-    (scene, camera, row, first): (&Scene<N, L>, &Camera, u16, u16),
+    (scene, camera, row, first, stride): (&Scene<N, L>, &Camera, u16, u16, u16),
     out: &mut [Rgb],
     cols: Range<usize>,
     cast: Cast<'_>,
@@ -87,7 +94,7 @@ fn paint<const N: usize, const L: usize>(
             if let Some(run) = out.get_mut(cols) {
                 match sky {
                     Some(sky) => run.fill(sky),
-                    None => scene.paint_sky(camera, row, first, run),
+                    None => scene.paint_sky(camera, row, first, stride, run),
                 }
             }
             return;
@@ -109,22 +116,48 @@ pub(crate) fn render_columns<const N: usize, const L: usize>(
     cols: Range<u16>,
     out: &mut [Rgb],
 ) {
+    render_every(scene, camera, row, cols, 0, out);
+}
+
+/// [`render_columns`] for every `2^shift`th column of `cols` from its first (`out[i]` is
+/// column `cols.start + i·2^shift`): the same walk along the row, its column step taken
+/// `2^shift` at a time, exactly, so the pixels are bit for bit those of the whole row. `shift`
+/// at most [`MAX_STRIDE_SHIFT`]; a larger one is taken as that.
+pub(crate) fn render_every<const N: usize, const L: usize>(
+    scene: &Scene<N, L>,
+    camera: &Camera,
+    row: u16,
+    cols: Range<u16>,
+    shift: u32,
+    out: &mut [Rgb],
+) {
+    // A walk of one column never steps: it is taken as that column alone, with a stride of
+    // 1, which keeps the step a column's however wide the stride asked.
+    let shift = shift.min(MAX_STRIDE_SHIFT);
+    let (cols, shift) = match cols.len() > 1 << shift {
+        true => (cols, shift),
+        false => (cols.start..cols.end.min(cols.start.saturating_add(1)), 0),
+    };
     // Where nothing can be hit the sky needs no rays (as in `render_row`).
     let sky = scene.background().plain_colour();
-    let offset = cols.start;
+    let (start, stride) = (cols.start, 1 << shift);
     cast_row(
         scene,
         camera,
         row,
-        cols,
+        (cols, shift),
         true,
         true,
         |first, end, cast, shadowers| {
-            let cols = (first - offset) as usize..(end - offset) as usize;
-            paint((scene, camera, row, first), out, cols, cast, shadowers, sky);
+            let at = (scene, camera, row, start + (first << shift), stride);
+            paint(at, out, first as usize..end as usize, cast, shadowers, sky);
         },
     );
 }
+
+/// The largest stride of a walk along a row, as a power of two: `2^7` column steps, each
+/// component of which stays within 2²⁴ raw (a component of `right` is at most 2¹⁶ + 1).
+pub(crate) const MAX_STRIDE_SHIFT: u32 = 7;
 
 /// Shoots the ray of every pixel of display row `y` into the scene, nearest hit first, and
 /// hands each to `each(x, ray, hit)` in column order: `render_row` without the shading.
@@ -161,7 +194,7 @@ pub fn shoot_row<const N: usize, const L: usize>(
         scene,
         camera,
         row,
-        0..camera.cols(),
+        (0..camera.cols(), 0),
         false,
         false,
         |col, _, cast, _| {
@@ -200,7 +233,7 @@ pub fn shoot_row_skipping<const N: usize, const L: usize>(
         scene,
         camera,
         row,
-        0..camera.cols(),
+        (0..camera.cols(), 0),
         true,
         false,
         |first, end, cast, _| match cast {
@@ -241,16 +274,23 @@ fn cast_row<const N: usize, const L: usize>(
     scene: &Scene<N, L>,
     camera: &Camera,
     row: u16,
-    cols: Range<u16>,
+    (cols, shift): (Range<u16>, u32),
     skip_empty: bool,
     matte: bool,
     mut each: impl FnMut(u16, u16, Cast<'_>, &[u32; L]),
 ) {
+    let start = cols.start;
     let mut runs = Runs::new(scene, camera, row);
     runs.limit(cols);
     let shadowers = *runs.shadowers();
     let mut each = |first, end, cast: Cast<'_>| each(first, end, cast, &shadowers);
-    while let Some((first, end, here)) = runs.next_run() {
+    while let Some((first_col, end_col, here)) = runs.next_run() {
+        let index = |c: u16| ((u32::from(c - start) + (1 << shift) - 1) >> shift) as u16;
+        let (first, end) = (index(first_col), index(end_col));
+        if first == end {
+            continue;
+        }
+        let col = start + (first << shift);
         if here == 0 && skip_empty {
             each(first, end, Cast::Empty);
             continue;
@@ -266,12 +306,13 @@ fn cast_row<const N: usize, const L: usize>(
             && plane.normal().dot_wide_exact(camera.column_step()) == 0
         {
             let num = eye.numerator(index);
-            let towards = runs.towards(first);
+            let towards = runs.towards(col);
             let run = MatteRun {
                 plane,
                 index,
                 num,
                 towards,
+                step: camera.column_step().steps(1 << shift),
             };
             each(first, end, Cast::MatteRun(&run));
             continue;
@@ -280,7 +321,15 @@ fn cast_row<const N: usize, const L: usize>(
             Some(index) => scene.shoot_one_from_eye(ray, index, eye),
             None => scene.shoot_from_eye(ray, here, eye),
         };
-        cast_run(camera, runs.towards(first), first..end, shoot, &mut each);
+        let step = camera.column_step().steps(1 << shift);
+        cast_run(
+            camera,
+            runs.towards(col),
+            step,
+            first..end,
+            shoot,
+            &mut each,
+        );
     }
 }
 
@@ -303,11 +352,12 @@ fn matte_plane<const N: usize, const L: usize>(scene: &Scene<N, L>, index: usize
 fn cast_run(
     camera: &Camera,
     towards: Vec3,
+    step: Vec3,
     cols: Range<u16>,
     shoot: impl Fn(&Ray) -> Option<SceneHit>,
     each: &mut impl FnMut(u16, u16, Cast<'_>),
 ) {
-    let mut rays = RowRays::starting(camera, towards, cols.len() as u16);
+    let mut rays = RowRays::stepping(camera, towards, step, cols.len() as u16);
     for col in cols {
         let ray = rays.advance();
         let hit = shoot(&ray);

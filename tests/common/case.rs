@@ -6,8 +6,8 @@ use fixray::{Camera, Vec3};
 use super::camera_spec::rounded3;
 use super::{
     CameraSpec, Source, View, World, camera_spec, check_camera_spec, check_framebuffer,
-    check_rays_past_the_screen, check_row, check_shadows, check_supersampled, check_viewport,
-    world,
+    check_progressive, check_rays_past_the_screen, check_row, check_shadows, check_supersampled,
+    check_viewport, world,
 };
 
 /// Everything one case draws: a world, a camera, rows, and how hard to push.
@@ -109,5 +109,6 @@ fn run_scene<const N: usize>(src: &mut impl Source, case: &Case, camera: &Camera
     if small {
         check_viewport(src, &scene, camera, &frame);
         check_framebuffer::<N, 12, 9>(src, &scene, camera, &frame);
+        check_progressive(src, &scene, camera, &frame);
     }
 }

@@ -14,7 +14,8 @@
 //! - `world`: generated scenes ([`World`] around a [`View`]);
 //! - `camera_spec`: generated cameras ([`CameraSpec`]) and when fixray must refuse them;
 //! - `exact`: `f64` arithmetic on Q16.16 values, and the chapter's camera in `f64`;
-//! - `check_camera`, `check_hit`, `check_row`: the oracles for cameras, hits and rows;
+//! - `check_camera`, `check_hit`, `check_row`, `check_progressive`: the oracles for cameras,
+//!   hits, rows and progressive passes;
 //! - `drawing`: a recording display ([`Recorder`]) and the oracles for drawing;
 //! - `case`: one random [`Case`] and every check run on it.
 //!
@@ -28,6 +29,7 @@ mod camera_spec;
 mod case;
 mod check_camera;
 mod check_hit;
+mod check_progressive;
 mod check_row;
 mod drawing;
 mod exact;
@@ -42,6 +44,7 @@ pub use self::{
     case::{Case, case, run_case},
     check_camera::{check_camera_spec, check_rays, check_rays_past_the_screen},
     check_hit::{check_hit, check_surface_through_origin},
+    check_progressive::check_progressive,
     check_row::{check_row, check_shadows, check_supersampled, occluded},
     drawing::{Recorder, check_framebuffer, check_viewport, corner},
     exact::{ToF64, ULP, UNIT_TOLERANCE, length},

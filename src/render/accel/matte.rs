@@ -36,12 +36,14 @@ use crate::scene::{Object, Scene};
 
 /// A run of columns whose rays can meet one matte plane only, object `index` (`plane`), whose
 /// numerator for rays from the eye is `num`, on a row whose column step is parallel to the
-/// plane (`n·r = 0`); the run's first ray is along `towards`.
+/// plane (`n·r = 0`); the run's first ray is along `towards`, and each next one `step`
+/// further (a whole number of column steps).
 pub(crate) struct MatteRun<'a> {
     pub(crate) plane: Plane,
     pub(crate) index: usize,
     pub(crate) num: &'a Numerator,
     pub(crate) towards: Vec3,
+    pub(crate) step: Vec3,
 }
 
 impl<const N: usize, const L: usize> Scene<N, L> {
@@ -81,13 +83,14 @@ impl<const N: usize, const L: usize> Scene<N, L> {
             point: Vec3::ZERO,
             normal,
         };
-        let (eye, step, towards) = (camera.eye(), camera.column_step(), run.towards);
+        let (eye, step, towards) = (camera.eye(), run.step, run.towards);
         // Where the plane is not ahead of the row, nothing is within reach.
         let scale = plane.scale_along(run.num, plane.normal().dot_wide_exact(towards));
         let reach = scale.map_or(0, far_reach);
         let scale = scale.unwrap_or(Scale { m: 0, shift: 1 });
         let walk = |from: usize| Walk {
             towards: towards.plus(step.steps(from as i32)),
+            step,
             scale,
             reach,
         };
@@ -133,7 +136,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
                 if stretch.is_empty() {
                     continue;
                 }
-                if walk.within(step, stretch.len()) {
+                if walk.within(stretch.len()) {
                     self.lit_stretch(camera, plane, object, axis, walk, stretch);
                 } else {
                     self.matte_loop(camera, plane, walk, stretch, &mut shadowed_at);
@@ -163,10 +166,11 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         out: &mut [Rgb],
         shade: &mut impl FnMut(Vec3) -> Rgb,
     ) {
-        let (eye, step) = (camera.eye(), camera.column_step());
+        let eye = camera.eye();
         let sky = self.background().plain_colour();
         let Walk {
             mut towards,
+            step,
             scale,
             reach,
         } = walk;
@@ -207,7 +211,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         walk: Walk,
         out: &mut [Rgb],
     ) {
-        let (eye, step) = (camera.eye(), camera.column_step());
+        let (eye, step) = (camera.eye(), walk.step);
         let material = &object.material;
         // One light on an unbounded plane of one colour, the common case on a small screen:
         // each column's direction to the light is the light's from the eye less the column's
@@ -251,19 +255,20 @@ impl<const N: usize, const L: usize> Scene<N, L> {
                     });
                     self.matte_pixel_within_one(material, diffuse, object.colour_at(point))
                 }
-                None => self.background_past_bounds(camera, walk.towards, k),
+                None => self.background_past_bounds(camera, walk.towards, step, k),
             };
             offsets.step();
         }
     }
 
-    /// What column `k` of a stretch that starts along `start` sees past a plane's bounds.
+    /// What column `k` of a stretch that starts along `start` and steps by `step` sees past a
+    /// plane's bounds.
     #[cold]
-    fn background_past_bounds(&self, camera: &Camera, start: Vec3, k: usize) -> Rgb {
+    fn background_past_bounds(&self, camera: &Camera, start: Vec3, step: Vec3, k: usize) -> Rgb {
         match self.background().plain_colour() {
             Some(sky) => sky,
             None => {
-                let towards = start.plus(camera.column_step().steps(k as i32));
+                let towards = start.plus(step.steps(k as i32));
                 self.background_along(camera, towards, towards.length_squared_wide())
             }
         }
@@ -278,21 +283,24 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     }
 }
 
-/// Where a stretch of a run starts: the direction towards its first column, and the plane's
-/// scale and reach, which the whole run shares.
+/// Where a stretch of a run starts: the direction towards its first column, and the step to
+/// the next, the plane's scale and reach, which the whole run shares.
 #[derive(Clone, Copy)]
 struct Walk {
     towards: Vec3,
+    step: Vec3,
     scale: Scale,
     reach: u64,
 }
 
 impl Walk {
-    /// Whether a stretch of `len` columns from this walk's start, stepping by `step`, lies
-    /// within reach at both ends, and so at every column: `‖w‖²` is a convex quadratic along
-    /// the stretch, exact in integers.
-    fn within(&self, step: Vec3, len: usize) -> bool {
-        let last = self.towards.plus(step.steps(len.saturating_sub(1) as i32));
+    /// Whether a stretch of `len` columns from this walk's start lies within reach at both
+    /// ends, and so at every column: `‖w‖²` is a convex quadratic along the stretch, exact in
+    /// integers.
+    fn within(&self, len: usize) -> bool {
+        let last = self
+            .towards
+            .plus(self.step.steps(len.saturating_sub(1) as i32));
         [self.towards, last]
             .iter()
             .all(|end| end.length_squared_wide() <= self.reach)

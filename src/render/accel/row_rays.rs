@@ -28,6 +28,7 @@ use crate::render::camera::Camera;
 pub struct RowRays<'a> {
     camera: &'a Camera,
     towards: Vec3,
+    step: Vec3,
     squares: RowSquares,
     left: u16,
 }
@@ -47,7 +48,8 @@ impl<'a> RowRays<'a> {
     /// The rays of display row `row`, which must be a row of the screen (the ray budget keeps
     /// its directions, and the squares carried along it, in range).
     pub(crate) fn new(camera: &'a Camera, row: u16) -> Self {
-        RowRays::starting(camera, camera.row_start(row), camera.cols())
+        let step = camera.column_step();
+        RowRays::stepping(camera, camera.row_start(row), step, camera.cols())
     }
 
     /// The next ray, and on to the column after it: [`Iterator::next`] where the caller counts
@@ -56,19 +58,21 @@ impl<'a> RowRays<'a> {
         let ray = self
             .camera
             .ray_along(self.towards, self.squares.now(self.towards));
-        self.towards = self.towards.plus(self.camera.column_step());
+        self.towards = self.towards.plus(self.step);
         self.squares.step();
         ray
     }
 
     /// `count` rays from the eye, the first along `towards` (a direction from
-    /// [`Camera::row_start`] stepped along its row), each further one a column to the right:
-    /// the rays of a run of columns, which must lie on the screen.
-    pub(crate) fn starting(camera: &'a Camera, towards: Vec3, count: u16) -> Self {
+    /// [`Camera::row_start`] stepped along its row), each further one `step` further (a
+    /// whole number of column steps): the rays of a run of columns, which must lie on the
+    /// screen.
+    pub(crate) fn stepping(camera: &'a Camera, towards: Vec3, step: Vec3, count: u16) -> Self {
         RowRays {
             camera,
             towards,
-            squares: RowSquares::new(towards, camera.column_step()),
+            step,
+            squares: RowSquares::new(towards, step),
             left: count,
         }
     }
@@ -87,9 +91,8 @@ impl Iterator for RowRays<'_> {
     fn nth(&mut self, n: usize) -> Option<Ray> {
         let n = n.min(self.left as usize) as u16;
         if n > 0 {
-            let step = self.camera.column_step();
-            self.towards = self.towards.plus(step.steps(n as i32));
-            self.squares = RowSquares::new(self.towards, step);
+            self.towards = self.towards.plus(self.step.steps(n as i32));
+            self.squares = RowSquares::new(self.towards, self.step);
             self.left -= n;
         }
         self.next()

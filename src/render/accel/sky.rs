@@ -18,9 +18,17 @@ use crate::scene::linear::rgb_of;
 
 impl<const N: usize, const L: usize> Scene<N, L> {
     /// The background's pixels for a run of columns of display row `row` that can meet
-    /// nothing, from column `first`, one for each pixel of `out`.
-    pub(crate) fn paint_sky(&self, camera: &Camera, row: u16, first: u16, out: &mut [Rgb]) {
-        let step = camera.column_step();
+    /// nothing, from column `first` and on every `stride`th column (a stride that keeps
+    /// `out`'s columns on the screen), one for each pixel of `out`.
+    pub(crate) fn paint_sky(
+        &self,
+        camera: &Camera,
+        row: u16,
+        first: u16,
+        stride: u16,
+        out: &mut [Rgb],
+    ) {
+        let step = camera.column_step().steps(stride.into());
         // Where a run's walk along the row starts (`Camera::row_start`).
         let mut towards = camera.towards(first.into(), row.into());
         let mut square = RowSquares::new(towards, step);

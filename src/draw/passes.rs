@@ -1,0 +1,133 @@
+//! [`Viewport::render_pass`]: a progressive render's pass onto a display, each traced pixel's
+//! block one filled rectangle.
+
+use core::ops::Range;
+
+use embedded_graphics::draw_target::DrawTarget;
+use embedded_graphics::prelude::{Point, Size};
+use embedded_graphics::primitives::{PointsIter, Rectangle};
+
+use super::clip::visible;
+use super::color::FromRgb;
+use super::error::DrawError;
+use super::viewport::Viewport;
+use crate::error::Error;
+use crate::render::progressive::{Pass, render_pass_row};
+use crate::scene::colour::Rgb;
+
+impl<const N: usize, const L: usize> Viewport<'_, N, L> {
+    /// Draws pass `pass` of a progressive render ([`Pass::sequence`]) onto `display`: each
+    /// pixel the pass traces, with its block (`spacing × spacing` from it, cut at the
+    /// picture's edges), as one filled rectangle, so that a driver's fast fill is used. Drawn
+    /// over every pass of a sequence, in order, the display shows what
+    /// [`render`](Self::render) draws, bit for bit, dithering included; begun again from a
+    /// first pass, as when the view moves, nothing of the sequence before is left.
+    ///
+    /// `buffer` must hold a row (`camera.width()` pixels, [`Error::BufferLength`]). Clipped to
+    /// the display as [`render`](Self::render) is: a row whose blocks do not show is not
+    /// traced. The first driver error stops the pass and is returned as
+    /// [`DrawError::Display`].
+    ///
+    /// ```
+    /// use embedded_graphics::{pixelcolor::Rgb565, prelude::*};
+    /// use embedded_graphics_simulator::SimulatorDisplay;
+    /// use fixray::{demo, Pass, Rgb, Viewport};
+    ///
+    /// let (scene, camera) = (demo::scene(), demo::camera(160, 128)?);
+    /// let view = Viewport::at(&scene, &camera, Point::zero());
+    /// let mut display = SimulatorDisplay::<Rgb565>::new(Size::new(160, 128));
+    /// let mut row = [Rgb::BLACK; 160];
+    /// for pass in Pass::sequence(8)? {
+    ///     view.render_pass(pass, &mut row, &mut display)?; // a picture after each
+    /// }
+    /// let mut full = SimulatorDisplay::<Rgb565>::new(Size::new(160, 128));
+    /// view.render(&mut row, &mut full)?;
+    /// assert!(display == full);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn render_pass<D>(
+        &self,
+        pass: Pass,
+        buffer: &mut [Rgb],
+        display: &mut D,
+    ) -> Result<(), DrawError<D::Error>>
+    where
+        D: DrawTarget,
+        D::Color: FromRgb,
+    {
+        self.render_pass_rows(pass, 0..self.camera.height(), buffer, display)
+    }
+
+    /// [`render_pass`](Self::render_pass) for the pass's rows within `rows` (0 is the
+    /// picture's top row): a pass drawn a band at a time can be left between bands when the
+    /// view moves. Rows past the picture's last are [`Error::RowOutOfRange`].
+    pub fn render_pass_rows<D>(
+        &self,
+        pass: Pass,
+        rows: Range<u32>,
+        buffer: &mut [Rgb],
+        display: &mut D,
+    ) -> Result<(), DrawError<D::Error>>
+    where
+        D: DrawTarget,
+        D::Color: FromRgb,
+    {
+        if rows.end > self.camera.height() {
+            self.camera.check_row(rows.end - 1)?;
+        }
+        let width = usize::from(self.camera.cols());
+        if buffer.len() < width {
+            let got = buffer.len();
+            return Err(Error::BufferLength { needed: width, got }.into());
+        }
+        let (shown_cols, shown_rows) = visible(self.top_left, self.size(), &display.bounding_box());
+        if shown_cols.is_empty() {
+            return Ok(());
+        }
+        let spacing = u32::from(pass.spacing());
+        for y in rows {
+            let Some((first, step)) = pass.columns(y) else {
+                continue;
+            };
+            let block_rows = y.max(shown_rows.start)..y.saturating_add(spacing).min(shown_rows.end);
+            if block_rows.is_empty() {
+                continue;
+            }
+            let count = render_pass_row(self.scene, self.camera, pass, y, buffer)?;
+            for (i, &colour) in (0..).zip(buffer.iter().take(count)) {
+                let x = first + i * step;
+                let block_cols =
+                    x.max(shown_cols.start)..x.saturating_add(spacing).min(shown_cols.end);
+                if block_cols.is_empty() {
+                    continue;
+                }
+                // On the display, below i32::MAX: `visible` keeps only such pixels.
+                let top_left = Point::new(
+                    self.top_left.x.wrapping_add(block_cols.start as i32),
+                    self.top_left.y.wrapping_add(block_rows.start as i32),
+                );
+                let size = Size::new(block_cols.len() as u32, block_rows.len() as u32);
+                fill_block(display, &Rectangle::new(top_left, size), colour)?;
+            }
+        }
+        Ok(())
+    }
+}
+
+/// Fills `area` with `colour` converted at each of its pixels: one solid fill where the
+/// conversion gives one colour throughout (every type that does not dither), the pixels one
+/// by one in a contiguous fill where it does not.
+fn fill_block<D>(display: &mut D, area: &Rectangle, colour: Rgb) -> Result<(), DrawError<D::Error>>
+where
+    D: DrawTarget,
+    D::Color: FromRgb,
+{
+    let at = |p: Point| D::Color::from_rgb(colour, p);
+    let first = at(area.top_left);
+    let result = if area.points().all(|p| at(p) == first) {
+        display.fill_solid(area, first)
+    } else {
+        display.fill_contiguous(area, area.points().map(at))
+    };
+    result.map_err(DrawError::Display)
+}
