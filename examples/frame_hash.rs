@@ -14,7 +14,9 @@
 //! It prints one line per renderer and scene, named as the firmware names its row, e.g.
 //! `fixed-classic 0x........`; there are more lines than the table has rows. Two more lines
 //! are the animation's (`firmware/src/animation.rs`): `animate-spans`, the digest of every
-//! span its partial redraws draw, and `animate-final`, its last frame.
+//! span its partial redraws draw, and `animate-final`, its last frame; two the progressive
+//! passes' (`firmware/src/progressive.rs`): `progressive-hash`, every pixel they trace, and
+//! `progressive-digest`, the frame they leave.
 
 // `FixedCall` draws as `Fixed` does, for the firmware's stack bound: no hash of its own here.
 #[allow(dead_code)]
@@ -23,6 +25,9 @@ mod renderer;
 
 #[path = "../firmware/src/animation.rs"]
 mod animation;
+
+#[path = "../firmware/src/progressive.rs"]
+mod progressive;
 
 use fixray::{FrameHash, Rgb};
 use renderer::{COLS, Fixed, FixedRays, FixedShoot, ROWS, Reference, Renderer, Variant};
@@ -37,6 +42,12 @@ fn main() {
     let totals = animation::run(|| 0).expect("the animation's scenes are valid");
     println!("animate-spans {:#010x}", totals.spans_hash);
     println!("animate-final {:#010x}", totals.final_hash);
+    // The progressive passes': every traced pixel in order, and the frame they leave, which
+    // must be the full frame's.
+    let passes = progressive::run(|| 0).expect("the demo scene's passes are valid");
+    assert_eq!(passes.passes_digest, passes.full_digest, "the passes end on the frame");
+    println!("progressive-hash {:#010x}", passes.passes_hash);
+    println!("progressive-digest {:#010x}", passes.full_digest);
 }
 
 /// Prints `name hash` for every scene drawn by `R`.

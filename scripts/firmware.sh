@@ -16,7 +16,8 @@
 #
 # Then `animate`: the demo scene with a ball rolling across its floor, each frame redrawn only
 # where fixray's `Damage` says it can have changed and then in full, with the instructions of
-# each, and the hashes of what it drew checked against the host's.
+# each, and the hashes of what it drew checked against the host's; and `progressive`: the
+# demo scene in progressive passes, each pass's instructions against the full frame's.
 #
 # Usage: scripts/firmware.sh [--markdown]
 #
@@ -347,9 +348,43 @@ for target in "${targets[@]}"; do
 done
 echo "per frame, averaged over the animation's frames; ratio = partial / full; damage = finding the region."
 
+# Progressive passes (firmware/src/bin/progressive.rs, firmware/src/progressive.rs): the demo
+# scene in passes from spacing 8 to 1, each pass's instructions against the full frame's (both
+# in the same binary). The hash of every traced pixel, and the digest of the frame the passes
+# leave (each pixel at its place), are examples/frame_hash.rs's; the latter must also be the
+# full frame's.
+echo
+prow() { printf '%-28s %-8s %10s %10s %10s %10s %10s %8s %8s\n' "$@"; }
+prow target hash pass1 pass2 pass3 pass4 full first all
+declare -A prog_first prog_all
+for target in "${targets[@]}"; do
+    log="$logs/$target-progressive.txt"
+    run_firmware "$target" progressive
+    progressive=$(line progressive:)
+    if ((status != 0)) || [[ -z $progressive ]]; then
+        prow "$target" FAILED "exit $status" - - - - - -
+        sed 's/^/    /' "$log" | tail -n 5 >&2
+        failed=1
+        continue
+    fi
+    verdict=MISMATCH
+    [[ $(field passes_hash "$progressive") == "${host_hash[progressive-hash]:-none}" &&
+        $(field passes_digest "$progressive") == "${host_hash[progressive-digest]:-none}" &&
+        $(field full_digest "$progressive") == "${host_hash[progressive-digest]:-none}" ]] && verdict=match
+    [[ $verdict == match ]] || failed=1
+    p=()
+    for k in 1 2 3 4; do p+=("$(field "pass$k" "$progressive")"); done
+    full=$(field full "$progressive")
+    all=$((p[0] + p[1] + p[2] + p[3]))
+    prog_first[$target]=$(awk -v p="${p[0]}" -v f="$full" 'BEGIN { printf "%.2f", 100 * p / f }')
+    prog_all[$target]=$(awk -v p="$all" -v f="$full" 'BEGIN { printf "%.1f", 100 * p / f }')
+    prow "$target" "$verdict" "${p[@]}" "$full" "${prog_first[$target]} %" "${prog_all[$target]} %"
+done
+echo "instructions of each pass and of the full frame; first = pass 1 / full, all = the four passes / full."
+
 echo
 echo "host hashes (examples/frame_hash.rs, examples/draw_hash.rs):"
-for renderer in "${names[@]}" draw-demo draw-classic animate-spans animate-final; do
+for renderer in "${names[@]}" draw-demo draw-classic animate-spans animate-final progressive-hash progressive-digest; do
     printf '  %-24s %s\n' "$renderer" "${host_hash[$renderer]:-none}"
 done
 echo "instruction counters (QEMU -icount shift=0), each checked by a loop of known length:"
@@ -464,6 +499,16 @@ tables() {
             printf ' — |'
         fi
     done
+    echo
+    echo
+    echo "Progressive passes (\`firmware/src/bin/progressive.rs\`): the demo scene at 160 × 128 in passes of spacing 8, 4, 2 and 1 (\`Pass::sequence(8)\`), instructions against the full frame's in the same binary:"
+    echo
+    chip_columns passes
+    printf '| the first pass (1/64 of the pixels) / full |'
+    for target in "${targets[@]}"; do printf ' %s %% |' "${prog_first[$target]:-—}"; done
+    echo
+    printf '| all four passes / full |'
+    for target in "${targets[@]}"; do printf ' %s %% |' "${prog_all[$target]:-—}"; done
     echo
 }
 # Known compiler miscompiles (firmware/src/bin/codegen_check.rs, firmware/src/codegen.rs): each

@@ -103,6 +103,46 @@ pub fn run_animation() -> ! {
     exit::with(exit::SUCCESS)
 }
 
+/// Runs the progressive passes of [`crate::progressive`], prints their report and ends the
+/// QEMU run:
+///
+/// ```text
+/// progressive: passes=4 pass1=... pass2=... pass3=... pass4=... full=... pixels=... passes_hash=0x........ passes_digest=0x........ full_digest=0x........
+/// ```
+///
+/// `passK` are the instructions of each pass's `render_pass_row` calls, `full` those of the
+/// full frame's `render_row` calls, `pixels` each pass's traced pixels (`/`-separated). The
+/// peak stack is the whole run's.
+pub fn run_progressive() -> ! {
+    println!(
+        "board={} target={} renderer=progressive",
+        crate::MACHINE,
+        crate::TARGET
+    );
+    check_counter();
+    stack::paint();
+    let totals = crate::progressive::run(counter::ticks).unwrap_or_else(|e| refused("a pass", e));
+    let peak = stack::peak();
+    let [p1, p2, p3, p4] = totals.pass_ticks.map(counter::instructions);
+    let [n1, n2, n3, n4] = totals.pass_pixels;
+    println!(
+        "progressive: passes={} pass1={p1} pass2={p2} pass3={p3} pass4={p4} full={} \
+         pixels={n1}/{n2}/{n3}/{n4} passes_hash={:#010x} passes_digest={:#010x} \
+         full_digest={:#010x}",
+        crate::progressive::PASSES,
+        counter::instructions(totals.full_ticks),
+        totals.passes_hash,
+        totals.passes_digest,
+        totals.full_digest
+    );
+    let usage = memory::usage();
+    println!(
+        "memory: flash={} static_ram={} peak_stack={peak}",
+        usage.flash, usage.static_ram
+    );
+    exit::with(exit::SUCCESS)
+}
+
 /// Starts the counter and times the loop of known length; a counter that disagrees ends the
 /// run, since every figure after it would be wrong.
 fn check_counter() {

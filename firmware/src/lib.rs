@@ -74,6 +74,7 @@ pub mod harness;
 pub mod memory;
 #[cfg(board = "lm3s6965evb")]
 pub mod oled;
+pub mod progressive;
 pub mod renderer;
 pub mod stack;
 
