@@ -25,6 +25,19 @@
 //! cargo run --release --example simulator -- --frames 12 --scene classic --png-dir out/classic
 //! ```
 //!
+//! With `--progressive DIR` it draws the picture in passes instead, as a display shows a frame
+//! that takes long to trace: the first pass traces every 8th pixel of every 8th row
+//! (`--spacing N` starts at another power of two up to 64) and paints each one's block, each
+//! next pass halves the spacing and traces only the pixels no pass traced before, and the
+//! last, at spacing 1, completes the picture. [`Viewport::render_pass`] draws each pass onto
+//! the simulator display, written after each pass to `DIR/pass-1.png`, `DIR/pass-2.png`, …;
+//! the display the passes leave is checked against a plain render.
+//!
+//! ```text
+//! cargo run --release --example simulator -- --progressive out/passes
+//! cargo run --release --example simulator -- --scene classic --progressive out/passes --spacing 16
+//! ```
+//!
 //! To look around a scene in the simulator's own window, see the `window` crate beside this
 //! one (`cd window && cargo run --release`).
 
@@ -36,11 +49,14 @@ use std::time::{Duration, Instant};
 use embedded_graphics::pixelcolor::{BinaryColor, Gray8, Rgb565, Rgb888};
 use embedded_graphics::prelude::{PixelColor, Point};
 use embedded_graphics_simulator::{OutputSettings, SimulatorDisplay};
-use fixray::{Camera, DrawError, FromRgb, MAX_PIXELS, Rgb, Scene, Viewport, demo};
+use fixray::{
+    Camera, DrawError, FromRgb, MAX_PIXELS, MAX_SPACING, Pass, Rgb, Scene, Viewport, demo,
+};
 
 const USAGE: &str = "\
 usage: simulator [--scene demo|classic] [--png FILE] [--size WxH] [--color rgb565|rgb888|gray8|binary]
        simulator --frames N [--png-dir DIR] [--apng FILE] [--scene S] [--size WxH] [--color C]
+       simulator --progressive DIR [--spacing N] [--scene S] [--size WxH] [--color C]
 
   --scene S      demo (default): matte spheres, one light; classic: tinyraytracer's scene with
                  three lights, highlights, shadows, mirrors, a glass ball and a checkerboard floor
@@ -53,6 +69,12 @@ usage: simulator [--scene demo|classic] [--png FILE] [--size WxH] [--color rgb56
   --png-dir DIR  with --frames: write frame-000.png, frame-001.png, ... to DIR
                  (default: out/frames in the crate)
   --apng FILE    with --frames: also write the frames as one animated PNG, looping
+  --progressive DIR
+                 draw the picture in passes instead, coarse to fine, the last one complete,
+                 and write the display after each pass to DIR/pass-1.png, DIR/pass-2.png, ...;
+                 the final picture is checked against a plain render
+  --spacing N    with --progressive: the first pass's spacing, a power of two from 1 to 64
+                 (default: 8); each pass after halves it, down to 1
   --help         this text
 
 For a window (arrow keys orbit, + and - zoom, A animates), run the window crate:
@@ -121,10 +143,18 @@ struct Options {
     frames: Option<u32>,
     png_dir: Option<PathBuf>,
     apng: Option<PathBuf>,
+    /// `Some` to draw in passes, each written to that directory.
+    progressive: Option<PathBuf>,
+    /// The first pass's spacing, if `--spacing` gave one.
+    spacing: Option<u16>,
 }
 
 /// The most frames `--frames` takes: at 160 × 128, a few minutes of animation.
 const MAX_FRAMES: u32 = 10_000;
+
+/// The first pass's spacing without `--spacing`: its blocks are small enough to show the
+/// scene's shapes, and it traces a 64th of the picture, so it comes quickly.
+const FIRST_SPACING: u16 = 8;
 
 /// `Ok(None)` means `--help`.
 fn parse(args: impl IntoIterator<Item = String>) -> Result<Option<Options>, String> {
@@ -137,6 +167,8 @@ fn parse(args: impl IntoIterator<Item = String>) -> Result<Option<Options>, Stri
         frames: None,
         png_dir: None,
         apng: None,
+        progressive: None,
+        spacing: None,
     };
     let mut args = args.into_iter();
     while let Some(arg) = args.next() {
@@ -189,10 +221,41 @@ fn parse(args: impl IntoIterator<Item = String>) -> Result<Option<Options>, Stri
             }
             "--png-dir" => options.png_dir = Some(PathBuf::from(value()?)),
             "--apng" => options.apng = Some(PathBuf::from(value()?)),
+            "--progressive" => options.progressive = Some(PathBuf::from(value()?)),
+            "--spacing" => {
+                let text = value()?;
+                // The library's own check, so that the example takes exactly what it does.
+                let spacing = text
+                    .parse::<u16>()
+                    .ok()
+                    .filter(|&s| Pass::sequence(s).is_ok())
+                    .ok_or(format!(
+                        "--spacing wants a power of two from 1 to {MAX_SPACING}, not '{text}'"
+                    ))?;
+                options.spacing = Some(spacing);
+            }
             other => return Err(format!("unknown argument '{other}'")),
         }
     }
     // Each mode's outputs with the other's would be silently ignored: refuse them instead.
+    if options.progressive.is_some() {
+        if options.frames.is_some() {
+            return Err("--progressive draws one picture in passes: not with --frames".into());
+        }
+        if options.png_dir.is_some() || options.apng.is_some() {
+            return Err(
+                "--progressive writes its passes to its own directory: not with --png-dir or --apng"
+                    .into(),
+            );
+        }
+        if options.png.is_some() {
+            return Err("--progressive writes its passes to its directory: not with --png".into());
+        }
+    } else if options.spacing.is_some() {
+        return Err(
+            "--spacing chooses the first pass of --progressive: it needs --progressive DIR".into(),
+        );
+    }
     if options.frames.is_some() && options.png.is_some() {
         return Err("--png writes one picture: with --frames use --png-dir or --apng".into());
     }
@@ -292,6 +355,9 @@ fn run(options: &Options) -> Result<(), String> {
     if let Some(frames) = options.frames {
         return animation::run(options, frames);
     }
+    if let Some(dir) = &options.progressive {
+        return progressive::run(options, dir);
+    }
     let default = Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/out/simulator.png"));
     write_png(options, options.png.as_deref().unwrap_or(default))
 }
@@ -313,6 +379,107 @@ fn main() -> ExitCode {
             eprintln!("simulator: {message} (see --help)");
             ExitCode::from(2)
         }
+    }
+}
+
+/// `--progressive`: the picture drawn in passes, coarse to fine, each one written.
+mod progressive {
+    use embedded_graphics::prelude::{Dimensions, PointsIter};
+
+    use super::*;
+
+    pub(super) fn run(options: &Options, dir: &Path) -> Result<(), String> {
+        match options.format {
+            Format::Rgb565 => passes::<Rgb565>(options, dir),
+            Format::Rgb888 => passes::<Rgb888>(options, dir),
+            Format::Gray8 => passes::<Gray8>(options, dir),
+            Format::Binary => passes::<BinaryColor>(options, dir),
+        }
+    }
+
+    /// How many pixels `pass` traces in a picture `cols × rows`: its columns in each row it
+    /// traces, as [`Pass::columns`] gives them (counted, not traced again: `render_pass_row`
+    /// would give the same count for a second trace of the row).
+    fn traced(pass: Pass, cols: u32, rows: u32) -> u32 {
+        (0..rows)
+            .filter_map(|y| pass.columns(y))
+            .filter(|&(first, _)| first < cols)
+            .map(|(first, step)| (cols - first).div_ceil(step))
+            .sum()
+    }
+
+    fn passes<C>(options: &Options, dir: &Path) -> Result<(), String>
+    where
+        C: FromRgb + From<BinaryColor> + Into<Rgb888> + PartialEq,
+    {
+        let (cols, rows) = (options.cols, options.rows);
+        let spacing = options.spacing.unwrap_or(FIRST_SPACING);
+        let sequence = Pass::sequence(spacing).map_err(|e| e.to_string())?;
+        let camera = options
+            .scene
+            .camera(cols, rows)
+            .map_err(|e| e.to_string())?;
+        let scene = options.scene.scene();
+        std::fs::create_dir_all(dir)
+            .map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
+        let shown_dir = std::path::absolute(dir).unwrap_or_else(|_| dir.to_path_buf());
+        println!(
+            "the {} scene, {cols}x{rows} {}, in passes from spacing {spacing} down to 1",
+            options.scene.name(),
+            options.format.name(),
+        );
+
+        let mut display = SimulatorDisplay::<C>::new(camera.size());
+        let view = Viewport::at(&scene, &camera, Point::zero());
+        let mut line = vec![Rgb::BLACK; cols as usize];
+        let screen = cols * rows;
+        let mut count = 0;
+        for (number, pass) in (1u32..).zip(sequence) {
+            let start = Instant::now();
+            view.render_pass(pass, &mut line, &mut display)
+                .map_err(|e| e.to_string())?;
+            let took = start.elapsed();
+            // Written as --png writes its picture.
+            let path = dir.join(format!("pass-{number}.png"));
+            display
+                .to_rgb_output_image(&OutputSettings::default())
+                .save_png(&path)
+                .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+            let pixels = traced(pass, cols, rows);
+            println!(
+                "pass {number}: spacing {:2}, traced {pixels:7} px ({:5.1} % of the picture) \
+                 in {:.2} ms, wrote {}",
+                pass.spacing(),
+                100.0 * f64::from(pixels) / f64::from(screen),
+                took.as_secs_f64() * 1e3,
+                shown_dir
+                    .join(path.file_name().unwrap_or_default())
+                    .display(),
+            );
+            count = number;
+        }
+
+        // The promise of the passes: together they draw what one plain render draws.
+        let (full, _) = render::<C>(&scene, &camera).map_err(|e| e.to_string())?;
+        if full != display {
+            let wrong = display
+                .bounding_box()
+                .points()
+                .filter(|&p| display.get_pixel(p) != full.get_pixel(p))
+                .count();
+            return Err(format!(
+                "after the last pass the picture differs from a plain render in {wrong} pixels"
+            ));
+        }
+        let files = match count {
+            1 => "1 PNG file, pass-1.png,".to_string(),
+            _ => format!("{count} PNG files, pass-1.png to pass-{count}.png,"),
+        };
+        println!(
+            "wrote {files} in {}; the last equals a plain render",
+            shown_dir.display()
+        );
+        Ok(())
     }
 }
 

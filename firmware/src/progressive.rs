@@ -64,9 +64,10 @@ pub fn run(mut ticks: impl FnMut() -> u32) -> Result<Totals, Error> {
             let pixels = row.get(..count).unwrap_or_default();
             hash.update(pixels);
             for (i, &colour) in (0..).zip(pixels) {
-                totals.passes_digest = totals
-                    .passes_digest
-                    .wrapping_add(digest(first + i * step, y, colour));
+                totals.passes_digest =
+                    totals
+                        .passes_digest
+                        .wrapping_add(digest(first + i * step, y, colour));
             }
             totals.pass_pixels[k] += count as u32;
         }
