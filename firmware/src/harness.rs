@@ -107,12 +107,11 @@ pub fn run_animation() -> ! {
 /// QEMU run:
 ///
 /// ```text
-/// progressive: passes=4 pass1=... pass2=... pass3=... pass4=... full=... pixels=... passes_hash=0x........ passes_digest=0x........ full_digest=0x........
+/// progressive: passes=4 pass1=... pass2=... pass3=... pass4=... pixels=... passes_hash=0x........ passes_digest=0x........
 /// ```
 ///
-/// `passK` are the instructions of each pass's `render_pass_row` calls, `full` those of the
-/// full frame's `render_row` calls, `pixels` each pass's traced pixels (`/`-separated). The
-/// peak stack is the whole run's.
+/// `passK` are the instructions of each pass's `render_pass_row` calls, `pixels` each pass's
+/// traced pixels (`/`-separated). The peak stack is the whole run's.
 pub fn run_progressive() -> ! {
     println!(
         "board={} target={} renderer=progressive",
@@ -126,14 +125,11 @@ pub fn run_progressive() -> ! {
     let [p1, p2, p3, p4] = totals.pass_ticks.map(counter::instructions);
     let [n1, n2, n3, n4] = totals.pass_pixels;
     println!(
-        "progressive: passes={} pass1={p1} pass2={p2} pass3={p3} pass4={p4} full={} \
-         pixels={n1}/{n2}/{n3}/{n4} passes_hash={:#010x} passes_digest={:#010x} \
-         full_digest={:#010x}",
+        "progressive: passes={} pass1={p1} pass2={p2} pass3={p3} pass4={p4} \
+         pixels={n1}/{n2}/{n3}/{n4} passes_hash={:#010x} passes_digest={:#010x}",
         crate::progressive::PASSES,
-        counter::instructions(totals.full_ticks),
         totals.passes_hash,
-        totals.passes_digest,
-        totals.full_digest
+        totals.passes_digest
     );
     let usage = memory::usage();
     println!(
