@@ -73,9 +73,12 @@
 //!   the shadow sets and cones, the first surface's shading), each bit for bit the plain
 //!   path's.
 //!   `changes.rs` bounds the pixels an edit of the scene can change ([`Damage`]) and
-//!   redraws only those ([`render_changes`], [`render_row_span`]), for animations.
+//!   redraws only those ([`render_changes`], [`render_row_span`]), for animations;
+//!   `progressive.rs` draws a frame in passes of halving spacing ([`Pass`],
+//!   [`render_pass_row`], [`render_pass`]) that end exactly on it, for a moving view.
 //! - [`draw`]: onto any `embedded-graphics` display at a point, clipped to it: a
-//!   [`Viewport`] drawn as one [`Picture`] (an embedded-graphics `Drawable`) or band by band,
+//!   [`Viewport`] drawn as one [`Picture`] (an embedded-graphics `Drawable`), band by band,
+//!   or pass by pass ([`Viewport::render_pass`], each block one filled rectangle),
 //!   in every embedded-graphics colour type ([`FromRgb`]), Bayer-dithered where a channel has
 //!   fewer than 8 bits; [`DrawError`] for anything that draws
 //! - `demo` (feature `demo`): the scenes the examples, tests and firmware share (demo and
