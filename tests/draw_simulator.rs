@@ -1,31 +1,16 @@
 //! The `simulator` example, run as a user runs it: its PNG has the right size, is a picture,
 //! and holds the framebuffer render's pixels; bad flags are refused without a panic.
 
+#[path = "common/simulator.rs"]
+mod simulator_run;
+
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
 
 use embedded_graphics::pixelcolor::{BinaryColor, Gray8, Rgb565, Rgb888};
 use embedded_graphics::prelude::{Point, RgbColor};
-use fixray::{Framebuffer, FromRgb, demo, render};
+use simulator_run::simulator;
 
-/// `cargo run --example simulator -- ARGS`, in this test's own profile so nothing is rebuilt.
-fn simulator(args: &[&str]) -> Output {
-    let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
-    let mut command = Command::new(cargo);
-    command.args([
-        "run",
-        "--quiet",
-        "--example",
-        "simulator",
-        "--manifest-path",
-    ]);
-    command.arg(Path::new(env!("CARGO_MANIFEST_DIR")).join("Cargo.toml"));
-    if !cfg!(debug_assertions) {
-        command.arg("--release");
-    }
-    command.arg("--").args(args);
-    command.output().expect("cargo runs")
-}
+use fixray::{Framebuffer, FromRgb, demo, render};
 
 fn temp_png(name: &str) -> PathBuf {
     let path = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("simulator-{name}.png"));

@@ -2,29 +2,14 @@
 //! the picture the passes so far leave, the last the plain render's; `--spacing` chooses the
 //! first pass, and bad values and combinations are refused without a panic.
 
+#[path = "common/simulator.rs"]
+mod simulator_run;
+
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+
+use simulator_run::simulator;
 
 use fixray::{Framebuffer, Pass, Rgb, demo, render, render_pass, render_pass_row};
-
-/// `cargo run --example simulator -- ARGS`, in this test's own profile so nothing is rebuilt.
-fn simulator(args: &[&str]) -> Output {
-    let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
-    let mut command = Command::new(cargo);
-    command.args([
-        "run",
-        "--quiet",
-        "--example",
-        "simulator",
-        "--manifest-path",
-    ]);
-    command.arg(Path::new(env!("CARGO_MANIFEST_DIR")).join("Cargo.toml"));
-    if !cfg!(debug_assertions) {
-        command.arg("--release");
-    }
-    command.arg("--").args(args);
-    command.output().expect("cargo runs")
-}
 
 /// An empty directory of this test's own, which the example has to create.
 fn temp_dir(name: &str) -> PathBuf {

@@ -14,7 +14,7 @@
 use crate::error::Error;
 use crate::framebuffer::Framebuffer;
 use crate::render::camera::Camera;
-use crate::render::rows::render_every;
+use crate::render::rows::{check_size, render_every};
 use crate::scene::{Rgb, Scene};
 
 /// The coarsest spacing a progressive render may start at, in pixels: a pass's pixels then
@@ -194,15 +194,7 @@ pub fn render_pass<const N: usize, const L: usize, const W: usize, const H: usiz
     pass: Pass,
     frame: &mut Framebuffer<W, H>,
 ) -> Result<(), Error> {
-    if (camera.cols() as usize, camera.rows() as usize) != (W, H) {
-        return Err(Error::SizeMismatch {
-            camera: (camera.cols(), camera.rows()),
-            target: (
-                W.min(u16::MAX as usize) as u16,
-                H.min(u16::MAX as usize) as u16,
-            ),
-        });
-    }
+    check_size::<W, H>(camera)?;
     let spacing = usize::from(pass.spacing());
     let mut traced = [Rgb::BLACK; W];
     for y in 0..H {

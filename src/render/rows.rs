@@ -434,6 +434,15 @@ pub fn render<const N: usize, const L: usize, const W: usize, const H: usize>(
     camera: &Camera,
     frame: &mut Framebuffer<W, H>,
 ) -> Result<(), Error> {
+    check_size::<W, H>(camera)?;
+    for (y, pixels) in (0..).zip(frame.rows_mut().iter_mut()) {
+        render_row(scene, camera, y, pixels)?;
+    }
+    Ok(())
+}
+
+/// Refuses a frame of `W × H` pixels for a camera of another size ([`Error::SizeMismatch`]).
+pub(crate) fn check_size<const W: usize, const H: usize>(camera: &Camera) -> Result<(), Error> {
     if (camera.cols() as usize, camera.rows() as usize) != (W, H) {
         return Err(Error::SizeMismatch {
             camera: (camera.cols(), camera.rows()),
@@ -442,9 +451,6 @@ pub fn render<const N: usize, const L: usize, const W: usize, const H: usize>(
                 H.min(u16::MAX as usize) as u16,
             ),
         });
-    }
-    for (y, pixels) in (0..).zip(frame.rows_mut().iter_mut()) {
-        render_row(scene, camera, y, pixels)?;
     }
     Ok(())
 }
