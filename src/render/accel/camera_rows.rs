@@ -65,7 +65,13 @@ impl Camera {
     /// one-pixel screen at 179.96°, and a cross product rounded to 2⁻¹⁶ then points
     /// hundredths of a radian off, far past the culling's margin of 2⁻¹¹ of a distance.
     pub(crate) fn row_plane_normal(&self, row: u16) -> Option<Vec3> {
-        let (r, w) = (self.right, self.towards(0, row.into()));
+        self.row_plane_normal_from(self.towards(0, row.into()))
+    }
+
+    /// [`Camera::row_plane_normal`] for the row whose [`Camera::row_start`] is `w`: a row's
+    /// walk has it already.
+    pub(crate) fn row_plane_normal_from(&self, w: Vec3) -> Option<Vec3> {
+        let r = self.right;
         let c = |p: Fx, q: Fx, s: Fx, t: Fx| {
             fx::wide_mul(p.to_bits(), q.to_bits()) - fx::wide_mul(s.to_bits(), t.to_bits())
         };
@@ -92,7 +98,7 @@ impl Camera {
     /// rounding and the half column of `cols/2`.
     pub(crate) fn column_span(&self, centre: Vec3, radius: Fx) -> Option<(i16, i16)> {
         let to_centre = centre - self.eye;
-        let view = self.forward.try_normalize()?;
+        let view = self.view_unit?;
         // In units of 2⁻⁸, each value below 2²¹ and each product of two below 2⁴²: the centre
         // and the eye lie within ±1024, a ball's radius within 2048. Flooring `x` and `z` moves
         // the centre by less than √2 units, which the radius, rounded up, grows by 2 to cover.

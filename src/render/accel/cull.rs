@@ -167,23 +167,29 @@ impl<const N: usize> Eye<N> {
     /// The shared terms of rays from `origin` into `scene` that try the objects of `among`
     /// (bit `i` for object `i`).
     pub(crate) fn new<const L: usize>(scene: &Scene<N, L>, origin: Vec3, among: u64) -> Self {
-        let mut numerators = [Numerator::NONE; N];
-        let mut planes = 0;
-        for (index, (num, object)) in numerators.iter_mut().zip(scene.objects()).enumerate() {
+        // Made in place: the numerators are a few hundred bytes, and a value moved into the
+        // caller's would be copied.
+        let mut eye = Eye {
+            numerators: [Numerator::NONE; N],
+            planes: 0,
+            before_planes: 0,
+        };
+        for (index, (num, object)) in eye.numerators.iter_mut().zip(scene.objects()).enumerate() {
             if let Shape::Plane(plane) = object.shape {
                 *num = plane.numerator(origin);
-                planes |= if index < 64 { bits::bit(index) } else { 0 };
+                eye.planes |= if index < 64 { bits::bit(index) } else { 0 };
             }
         }
-        Eye {
-            numerators,
-            planes,
-            before_planes: if planes != 0 && among & !planes != 0 {
-                spheres_before_planes(scene, planes, among & !planes, &numerators, origin)
-            } else {
-                0
-            },
+        if eye.planes != 0 && among & !eye.planes != 0 {
+            eye.before_planes = spheres_before_planes(
+                scene,
+                eye.planes,
+                among & !eye.planes,
+                &eye.numerators,
+                origin,
+            );
         }
+        eye
     }
 
     /// Plane `index`'s numerator of Eq. 4.2 for rays from the eye (0 for anything else).

@@ -49,21 +49,10 @@ impl<'a, const N: usize, const L: usize> Runs<'a, N, L> {
         // for empty while they exist, and object 63 is simply tried with them.
         let own_bits = if scene.objects().len() > 64 { 63 } else { 64 };
         let beyond = if own_bits == 63 { 1 << 63 } else { 0 };
-        let row_normal = camera.row_plane_normal(row);
+        let start = camera.row_start(row);
+        let row_normal = camera.row_plane_normal_from(start);
         let among = scene.seen_from_row_plane(camera.eye(), row_normal) & scene.present() | beyond;
-        let mut runs = Runs {
-            scene,
-            among,
-            bounded: 0,
-            spans: [(0, 0); N],
-            planes: 0,
-            shadowers: [!0; L],
-            eye: Eye::new(scene, camera.eye(), among),
-            start: camera.row_start(row),
-            step: camera.column_step(),
-            col: 0,
-            cols: camera.cols(),
-        };
+        let (mut bounded, mut spans, mut planes) = (0, [(0, 0); N], 0);
         for (index, object) in scene.objects().iter().enumerate().take(own_bits) {
             match object.shape {
                 Shape::Sphere(sphere) if bits::has(among, index) => {
@@ -72,22 +61,36 @@ impl<'a, const N: usize, const L: usize> Runs<'a, N, L> {
                         Some(normal) => row_ball(&sphere, camera.eye(), normal),
                         None => (sphere.centre(), sphere.radius()),
                     };
-                    if let (Some(span), Some(slot)) = (
-                        camera.column_span(centre, radius),
-                        runs.spans.get_mut(index),
-                    ) {
+                    if let (Some(span), Some(slot)) =
+                        (camera.column_span(centre, radius), spans.get_mut(index))
+                    {
                         *slot = span;
-                        runs.bounded |= bits::bit(index);
+                        bounded |= bits::bit(index);
                     }
                 }
-                Shape::Plane(_) => runs.planes |= bits::bit(index),
+                Shape::Plane(_) => planes |= bits::bit(index),
                 Shape::Sphere(_) => {}
             }
         }
-        if let Some(row_normal) = row_normal {
-            runs.shadowers = row_shadowers(scene, camera.eye(), row_normal, runs.planes & among);
+        let shadowers = match row_normal {
+            Some(row_normal) => row_shadowers(scene, camera.eye(), row_normal, planes & among),
+            None => [!0; L],
+        };
+        // One value made last, in the caller's place: a `Runs` is a few hundred bytes, and
+        // one made earlier and changed would be copied there.
+        Runs {
+            scene,
+            among,
+            bounded,
+            spans,
+            planes,
+            shadowers,
+            eye: Eye::new(scene, camera.eye(), among),
+            start,
+            step: camera.column_step(),
+            col: 0,
+            cols: camera.cols(),
         }
-        runs
     }
 
     /// For each light, the objects that may shadow a hit of the row on a plane (see

@@ -51,32 +51,40 @@ pub(crate) fn row_shadowers<const N: usize, const L: usize>(
     if !scene.shadows() || planes == 0 || objects.len() > 32 {
         return sets;
     }
-    for (set, light) in sets.iter_mut().zip(scene.lights()) {
-        // A sphere is ruled out only where every plane of the row rules it out.
-        let mut ruled_out = !0u32;
-        let mut rest = planes;
-        while rest != 0 && ruled_out != 0 {
-            let index = rest.trailing_zeros() as usize;
-            rest &= rest - 1;
-            ruled_out &= match objects.get(index).map(|o| o.shape) {
-                Some(Shape::Plane(plane)) => {
-                    far_from_row(scene, &plane, row_normal, eye, light.position()).unwrap_or(0)
-                }
-                _ => 0,
-            };
+    // A sphere is ruled out for a light only where every plane of the row rules it out. The
+    // planes go outermost: the angle between a plane and the row's is the lights' to share.
+    let mut ruled_out = [!0u32; L];
+    let mut rest = planes;
+    while rest != 0 && ruled_out.iter().any(|&r| r != 0) {
+        let index = rest.trailing_zeros() as usize;
+        rest &= rest - 1;
+        let Some(Shape::Plane(plane)) = objects.get(index).map(|o| o.shape) else {
+            ruled_out = [0; L];
+            break;
+        };
+        // The sine of the angle between the plane and the row's plane, less its rounding.
+        let sin_row = row_normal.cross(plane.normal()).length() - Fx::from_bits(1 << 3);
+        for (out, light) in ruled_out.iter_mut().zip(scene.lights()) {
+            if *out != 0 {
+                let row = (row_normal, sin_row);
+                *out &= far_from_row(scene, &plane, row, eye, light.position()).unwrap_or(0);
+            }
         }
-        *set = !ruled_out;
+    }
+    for (set, out) in sets.iter_mut().zip(ruled_out).take(scene.lights().len()) {
+        *set = !out;
     }
     sets
 }
 
 /// The spheres (bit `i` for object `i`) that cannot shadow any hit of the row whose plane
 /// has the unit normal `row_normal` on `plane` from a light at `light`, or `None` where the
-/// margins cannot be bounded.
+/// margins cannot be bounded. `sin_row` is the sine of the angle between the two planes,
+/// `|row_normal × n|`, less its rounding.
 fn far_from_row<const N: usize, const L: usize>(
     scene: &Scene<N, L>,
     plane: &Plane,
-    row_normal: Vec3,
+    (row_normal, sin_row): (Vec3, Fx),
     eye: Vec3,
     light: Vec3,
 ) -> Option<u32> {
@@ -85,8 +93,6 @@ fn far_from_row<const N: usize, const L: usize>(
     // Lights, eyes and planes' points lie within ±LIMIT: no difference here saturates.
     let height = normal.dot_units(light - plane.point());
     let reach = height.abs() - OFF_PLANE;
-    // The sine of the angle between the plane and the row's plane, less its rounding.
-    let sin_row = row_normal.cross(normal).length() - Fx::from_bits(1 << 3);
     if reach < Fx::from_bits(1 << 14) || sin_row < Fx::from_bits(1 << 10) {
         return None; // a light within ¼ of the plane, or a row's plane within 1/64 of it
     }
@@ -104,10 +110,11 @@ fn far_from_row<const N: usize, const L: usize>(
     // distance from the eye: within `(OFF_PLANE + t / 2¹²) / sin_row` of their line, which
     // lies in Π. Seen from the light, at least `reach` away, with `t` at most `reach` plus
     // `|light − eye|` more than that, the direction to the hit is off Π by at most `off`; Π's
-    // rounded normal, by `tilt`.
-    let from_eye = to_light.length();
+    // rounded normal, by `tilt`. `|light − eye|` is taken at most the sum of its components'
+    // sizes, which needs no root (each below 2¹², from coordinates within ±LIMIT).
+    let from_eye = Fx::from_bits(to_light.l1_raw().min(i32::MAX as i64 >> 2) as i32);
     let off = quotient(
-        OFF_PLANE + ((reach + from_eye) >> OFF_ROW_SHIFT),
+        OFF_PLANE + ((reach.saturating_add(from_eye)) >> OFF_ROW_SHIFT),
         product(reach, sin_row),
     )?;
     let tilt = quotient(error * 2, size)? + ROUNDED_DIRECTION;

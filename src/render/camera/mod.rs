@@ -82,6 +82,9 @@ pub struct Camera {
     pub(in crate::render) down: Vec3,
     /// The view distance in pixels, as `forward` was scaled to it.
     pub(in crate::render) view: Fx,
+    /// `forward` normalised, for the culling's column spans: a property of the camera, so
+    /// made once here rather than for every sphere of every row.
+    pub(in crate::render) view_unit: Option<Vec3>,
     /// The distance from the eye to the screen in world units, for [`Camera::pixel_centre`]:
     /// a direction in pixel units times `screen / view` is a point of the screen.
     screen: Fx,
@@ -393,9 +396,11 @@ impl Camera {
         debug_assert_eq!(aspect, down.length());
         check_resolution(cols, rows)?;
         check_budget(view, aspect, cols, rows)?;
+        let forward = dir.scale(view);
         Ok(Camera {
             eye,
-            forward: dir.scale(view),
+            forward,
+            view_unit: forward.try_normalize(),
             right,
             down,
             view,
