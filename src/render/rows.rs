@@ -44,64 +44,44 @@ pub fn render_row<const N: usize, const L: usize>(
     out: &mut [Rgb],
 ) -> Result<(), Error> {
     let row = check_row(camera, y, out)?;
-    // Where nothing can be hit the sky needs no rays: a plain one is its colour, a gradient
-    // reads one component of each ray's direction.
-    let sky = scene.background().plain_colour();
-    cast_row(
-        scene,
-        camera,
-        row,
-        (0..camera.cols(), 0),
-        true,
-        true,
-        |first, end, cast, shadowers| {
-            let cols = first as usize..end as usize;
-            paint(
-                (scene, camera, row, first, 1),
-                out,
-                cols,
-                cast,
-                shadowers,
-                sky,
-            )
-        },
-    );
+    render_every(scene, camera, row, 0..camera.cols(), 0, out);
     Ok(())
 }
 
-/// Paints what [`cast_row`] hands over for `out[cols]`, display columns from `first` of display
-/// row `row`: a shaded pixel, a matte run, or a run of sky (`sky`, where it is plain).
-// In line, with `cast_run`: the row's loop calls it for every pixel and run, and a call would
-// move the loop's values out of the registers it clobbers.
-#[inline(always)]
-fn paint<const N: usize, const L: usize>(
-    (scene, camera, row, first, stride): (&Scene<N, L>, &Camera, u16, u16, u16),
+/// Paints a run [`cast_row`] hands over whole into `out[cols]`, display columns from `first`
+/// by `stride` of display row `row`: a matte run, or a run of sky (`sky`, where it is plain).
+fn paint_run<const N: usize, const L: usize>(
+    (scene, camera, row): (&Scene<N, L>, &Camera, u16),
+    (first, stride): (u16, u16),
     out: &mut [Rgb],
-    cols: Range<usize>,
-    cast: Cast<'_>,
+    cols: Range<u16>,
+    run: Run<'_>,
     shadowers: &[u32; L],
     sky: Option<Rgb>,
 ) {
-    let pixel = match cast {
-        Cast::Ray(ray, hit) => scene.pixel_among(ray, hit, shadowers),
-        Cast::MatteRun(run) => {
-            if let Some(pixels) = out.get_mut(cols) {
-                scene.shade_matte_run(camera, run, shadowers, pixels);
-            }
-            return;
-        }
-        Cast::Empty => {
-            if let Some(run) = out.get_mut(cols) {
-                match sky {
-                    Some(sky) => run.fill(sky),
-                    None => scene.paint_sky(camera, row, first, stride, run),
-                }
-            }
-            return;
-        }
+    let Some(pixels) = out.get_mut(cols.start as usize..cols.end as usize) else {
+        return;
     };
-    if let Some(out) = out.get_mut(cols.start) {
-        *out = pixel;
+    match run {
+        Run::Matte(run) => scene.shade_matte_run(camera, run, shadowers, pixels),
+        Run::Empty => match sky {
+            Some(sky) => pixels.fill(sky),
+            None => scene.paint_sky(camera, row, first, stride, pixels),
+        },
+    }
+}
+
+/// Shades the pixel [`cast_row`] hands over for `out[col]`.
+fn paint_pixel<const N: usize, const L: usize>(
+    scene: &Scene<N, L>,
+    out: &mut [Rgb],
+    col: u16,
+    ray: &Ray,
+    hit: Option<SceneHit>,
+    shadowers: &[u32; L],
+) {
+    if let Some(out) = out.get_mut(col as usize) {
+        *out = scene.pixel_among(ray, hit, shadowers);
     }
 }
 
@@ -141,6 +121,7 @@ pub(crate) fn render_every<const N: usize, const L: usize>(
     // Where nothing can be hit the sky needs no rays (as in `render_row`).
     let sky = scene.background().plain_colour();
     let (start, stride) = (cols.start, 1 << shift);
+    let at = (scene, camera, row);
     cast_row(
         scene,
         camera,
@@ -148,10 +129,12 @@ pub(crate) fn render_every<const N: usize, const L: usize>(
         (cols, shift),
         true,
         true,
-        |first, end, cast, shadowers| {
-            let at = (scene, camera, row, start + (first << shift), stride);
-            paint(at, out, first as usize..end as usize, cast, shadowers, sky);
+        out,
+        |out, first, end, run, shadowers| {
+            let place = (start + (first << shift), stride);
+            paint_run(at, place, out, first..end, run, shadowers, sky);
         },
+        |out, col, ray, hit, shadowers| paint_pixel(scene, out, col, ray, hit, shadowers),
     );
 }
 
@@ -197,11 +180,9 @@ pub fn shoot_row<const N: usize, const L: usize>(
         (0..camera.cols(), 0),
         false,
         false,
-        |col, _, cast, _| {
-            if let Cast::Ray(ray, hit) = cast {
-                each(col.into(), ray, hit);
-            }
-        },
+        &mut each,
+        |_, _, _, _, _| {}, // not made: `skip_empty` and `matte` are false here
+        |each, col, ray, hit, _| each(col.into(), ray, hit),
     );
     Ok(())
 }
@@ -225,8 +206,8 @@ pub fn shoot_row_skipping<const N: usize, const L: usize>(
     scene: &Scene<N, L>,
     camera: &Camera,
     y: u32,
-    mut empty: impl FnMut(core::ops::Range<u32>),
-    mut each: impl FnMut(u32, &Ray, Option<SceneHit>),
+    empty: impl FnMut(core::ops::Range<u32>),
+    each: impl FnMut(u32, &Ray, Option<SceneHit>),
 ) -> Result<(), Error> {
     let row = camera.check_row(y)?;
     cast_row(
@@ -236,54 +217,59 @@ pub fn shoot_row_skipping<const N: usize, const L: usize>(
         (0..camera.cols(), 0),
         true,
         false,
-        |first, end, cast, _| match cast {
-            Cast::Ray(ray, hit) => each(first.into(), ray, hit),
-            Cast::Empty => empty(first.into()..end.into()),
-            Cast::MatteRun(_) => {} // not made: `matte` is false here
+        &mut (empty, each),
+        |(empty, _), first, end, run, _| match run {
+            Run::Empty => empty(first.into()..end.into()),
+            Run::Matte(_) => {} // not made: `matte` is false here
         },
+        |(_, each), col, ray, hit, _| each(col.into(), ray, hit),
     );
     Ok(())
 }
 
-/// What [`cast_row`] hands over for a column, or a run of them.
-pub(crate) enum Cast<'a> {
-    /// A run in which no object can be hit, without rays.
+/// What [`cast_row`] hands over for a run of columns as a whole, without rays.
+pub(crate) enum Run<'a> {
+    /// A run in which no object can be hit.
     Empty,
-    /// A pixel's ray and its nearest hit.
-    Ray(&'a Ray, Option<SceneHit>),
     /// A run that can meet one matte plane only, on a row parallel to it: found and shaded
-    /// whole, without rays ([`Scene::shade_matte_run`]).
-    MatteRun(&'a MatteRun<'a>),
+    /// whole ([`Scene::shade_matte_run`]).
+    Matte(&'a MatteRun<'a>),
 }
 
 /// The engine of [`shoot_row`] and [`render_row`]: the row's runs ([`Runs`]), and in each the
 /// rays, by column steps ([`Camera::row_rays`]), shot at the run's objects; each is handed to
-/// `each(col, col + 1, Cast::Ray(ray, hit), shadowers)`, with `shadowers[i]` the objects that
-/// may shadow the row's plane hits from light `i` (see `Runs::shadowers`). Only columns
-/// `cols` are cast.
+/// `each(i, ray, hit, shadowers)`, with `shadowers[i]` the objects that may shadow the row's
+/// plane hits from light `i` (see `Runs::shadowers`). Only columns `cols` are cast, every
+/// `2^shift`th from the first: `i` counts them.
 ///
 /// With `skip_empty`, a run in which no object can be hit is handed over whole and without
-/// rays, as `each(first, end, Cast::Empty, shadowers)`: `render_row` paints the sky so, which
+/// rays, as `whole(first, end, Run::Empty, shadowers)`: `render_row` paints the sky so, which
 /// needs no ray (a plain one is its colour, a gradient reads one component of each
 /// direction: `Scene::paint_sky`). With `matte`, a run that can meet one matte plane only, on
-/// a row parallel to it, is handed over whole as [`Cast::MatteRun`], without rays: the point
+/// a row parallel to it, is handed over whole as [`Run::Matte`], without rays: the point
 /// where a ray meets a plane needs only the direction towards the pixel, not the unit one
 /// (`Plane::intersect`), and shading a matte surface needs neither
 /// ([`Scene::shade_matte_run`]).
-fn cast_row<const N: usize, const L: usize>(
+///
+/// Both are handed `target`, what they draw into. The runs and the pixels come to two
+/// closures, not one: the pixels' is then called from the run loop alone, where the compiler
+/// can take its shading in line.
+#[allow(clippy::too_many_arguments)]
+fn cast_row<T: ?Sized, const N: usize, const L: usize>(
     scene: &Scene<N, L>,
     camera: &Camera,
     row: u16,
     (cols, shift): (Range<u16>, u32),
     skip_empty: bool,
     matte: bool,
-    mut each: impl FnMut(u16, u16, Cast<'_>, &[u32; L]),
+    target: &mut T,
+    mut whole: impl FnMut(&mut T, u16, u16, Run<'_>, &[u32; L]),
+    mut each: impl FnMut(&mut T, u16, &Ray, Option<SceneHit>, &[u32; L]),
 ) {
     let start = cols.start;
     let mut runs = Runs::new(scene, camera, row);
     runs.limit(cols);
     let shadowers = *runs.shadowers();
-    let mut each = |first, end, cast: Cast<'_>| each(first, end, cast, &shadowers);
     while let Some((first_col, end_col, here)) = runs.next_run() {
         let index = |c: u16| ((u32::from(c - start) + (1 << shift) - 1) >> shift) as u16;
         let (first, end) = (index(first_col), index(end_col));
@@ -292,7 +278,7 @@ fn cast_row<const N: usize, const L: usize>(
         }
         let col = start + (first << shift);
         if here == 0 && skip_empty {
-            each(first, end, Cast::Empty);
+            whole(target, first, end, Run::Empty, &shadowers);
             continue;
         }
         let eye = runs.eye();
@@ -314,7 +300,7 @@ fn cast_row<const N: usize, const L: usize>(
                 towards,
                 step: camera.column_step().steps(1 << shift),
             };
-            each(first, end, Cast::MatteRun(&run));
+            whole(target, first, end, Run::Matte(&run), &shadowers);
             continue;
         }
         let shoot = |ray: &Ray| match one {
@@ -328,7 +314,7 @@ fn cast_row<const N: usize, const L: usize>(
             step,
             first..end,
             shoot,
-            &mut each,
+            |i, ray, hit| each(target, i, ray, hit, &shadowers),
         );
     }
 }
@@ -346,22 +332,19 @@ fn matte_plane<const N: usize, const L: usize>(scene: &Scene<N, L>, index: usize
 
 /// The rays of columns `cols` of a run, the first along `towards`, each shot by `shoot` and
 /// handed to `each` as [`cast_row`] does.
-// In line, with `paint`: the loop over a run's columns, each shot and painted, where a call
-// would move the row's values out of the registers it clobbers.
-#[inline(always)]
 fn cast_run(
     camera: &Camera,
     towards: Vec3,
     step: Vec3,
     cols: Range<u16>,
     shoot: impl Fn(&Ray) -> Option<SceneHit>,
-    each: &mut impl FnMut(u16, u16, Cast<'_>),
+    mut each: impl FnMut(u16, &Ray, Option<SceneHit>),
 ) {
     let mut rays = RowRays::stepping(camera, towards, step, cols.len() as u16);
     for col in cols {
         let ray = rays.advance();
         let hit = shoot(&ray);
-        each(col, col + 1, Cast::Ray(&ray, hit));
+        each(col, &ray, hit);
     }
 }
 

@@ -24,6 +24,10 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// [`Scene::shade`] for a ray from the eye whose first hit is `hit`, where a hit on a plane
     /// need only try the objects of `plane_shadowers[light]` (bit `i` for object `i`) for its
     /// shadow rays towards each light.
+    // In line, in the row walk's loop over a run's rays (its one caller): called, it takes
+    // the hit by value through memory and walks the lights out of line, about a tenth more
+    // instructions a frame on every chip.
+    #[inline(always)]
     pub(crate) fn pixel_among(
         &self,
         ray: &Ray,
