@@ -102,7 +102,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// (`None`: none), the columns each sphere it tries may shadow, and none where no light's
     /// rays try anything; all of them where a plane may shadow the run, the scene's sets do
     /// not name the objects, more than three spheres are tried in all, or the run is shorter
-    /// than 32 columns.
+    /// than 16 pixels.
     pub(crate) fn shadowed_columns(
         &self,
         index: usize,
@@ -111,9 +111,10 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         sets: &[Option<u32>; L],
     ) -> Range<usize> {
         // Each sphere costs two lengths and a division a light: past three (several lights
-        // over several spheres, as in the classic scene), or on a short run (an animation's
-        // redrawn region), the columns they leave out spare less than they cost, and the run
-        // is taken whole.
+        // over several spheres, as in the classic scene), or on a short run (a few pixels of an
+        // animation's redrawn region), the columns they leave out spare less than they cost,
+        // and the run is taken whole. A progressive pass's runs hold fewer pixels than the
+        // row's: from 16, the pixels spared still pay.
         let mut tried = 0;
         for (i, set) in sets.iter().enumerate() {
             let Some(among) = *set else { continue };
@@ -125,7 +126,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         if tried == 0 {
             return 0..0;
         }
-        if tried > 3 || line.len < 32 {
+        if tried > 3 || line.len < 16 {
             return 0..line.len;
         }
         let (mut lo, mut hi) = (line.len, 0);
