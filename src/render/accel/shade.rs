@@ -27,7 +27,6 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     // In line, in the row walk's loop over a run's rays (its one caller): called, it takes
     // the hit by value through memory and walks the lights out of line, about a tenth more
     // instructions a frame on every chip.
-    #[inline(always)]
     pub(crate) fn pixel_among(
         &self,
         ray: &Ray,
