@@ -104,10 +104,20 @@ fn viewport_passes_end_on_its_render<C: PixelColor + fixray::FromRgb + std::fmt:
     let mut row = [Rgb::BLACK; 48];
     let mut rendered = recorder::<C>(40, 40);
     view.render(&mut row, &mut rendered).unwrap();
+    let frame = full::<_, 48, 32>(&scene, &camera);
     for coarsest in [1, 4, 8, 64] {
         let mut passed = recorder::<C>(40, 40);
         for pass in Pass::sequence(coarsest).unwrap() {
             view.render_pass(pass, &mut row, &mut passed).unwrap();
+            // Each pixel shown: its block's traced pixel, converted at its own place.
+            let s = i32::from(pass.spacing());
+            for (&(px, py), &got) in &passed.pixels {
+                let p = Point::new(px, py);
+                let (x, y) = (px - corner.x, py - corner.y);
+                let traced = frame.pixel((x - x % s) as usize, (y - y % s) as usize);
+                let want = C::from_rgb(traced.unwrap(), p);
+                assert_eq!(got, want, "from {coarsest}, spacing {s}, at {p:?}");
+            }
         }
         assert!(
             passed.pixels == rendered.pixels,

@@ -1,5 +1,6 @@
 //! [`Viewport::render_pass`]: a progressive render's pass onto a display, each traced pixel's
-//! block one filled rectangle.
+//! block filled: a row whose blocks tile their band as one fill of the band, the others one
+//! filled rectangle a block.
 
 use core::ops::Range;
 
@@ -18,7 +19,10 @@ use crate::scene::colour::Rgb;
 impl<const N: usize, const L: usize> Viewport<'_, N, L> {
     /// Draws pass `pass` of a progressive render ([`Pass::sequence`]) onto `display`: each
     /// pixel the pass traces, with its block (`spacing × spacing` from it, cut at the
-    /// picture's edges), as one filled rectangle, so that a driver's fast fill is used. Drawn
+    /// picture's edges), as filled rectangles, so that a driver's fast fill is used: where a
+    /// row's blocks tile their band (every pixel of the first pass, two thirds of the
+    /// others'), the band as one `fill_contiguous`, one window for the driver; elsewhere each
+    /// block as one `fill_solid` (per pixel where the colour type dithers). Drawn
     /// over every pass of a sequence, in order, the display shows what
     /// [`render`](Self::render) draws, bit for bit, dithering included; begun again from a
     /// first pass, as when the view moves, nothing of the sequence before is left.
@@ -94,20 +98,41 @@ impl<const N: usize, const L: usize> Viewport<'_, N, L> {
                 continue;
             }
             let count = render_pass_row(self.scene, self.camera, pass, y, buffer)?;
-            for (i, &colour) in (0..).zip(buffer.iter().take(count)) {
+            let colours = buffer.get(..count).unwrap_or_default();
+            // On the display, below i32::MAX: `visible` keeps only such pixels.
+            let corner = |x: u32, y: u32| {
+                Point::new(
+                    self.top_left.x.wrapping_add(x as i32),
+                    self.top_left.y.wrapping_add(y as i32),
+                )
+            };
+            if step == spacing {
+                // The row's blocks tile their band (`first` is 0): one fill of the band, one
+                // window for a driver to open, each pixel its block's colour.
+                let size = Size::new(shown_cols.len() as u32, block_rows.len() as u32);
+                let band = Rectangle::new(corner(shown_cols.start, block_rows.start), size);
+                let left = self.top_left.x;
+                let colour_at = |p: Point| {
+                    let x = p.x.wrapping_sub(left) as u32;
+                    let block = colours.get((x / spacing) as usize).copied();
+                    D::Color::from_rgb(block.unwrap_or(Rgb::BLACK), p)
+                };
+                let pixels = band.points().map(colour_at);
+                display
+                    .fill_contiguous(&band, pixels)
+                    .map_err(DrawError::Display)?;
+                continue;
+            }
+            for (i, &colour) in (0..).zip(colours) {
                 let x = first + i * step;
                 let block_cols =
                     x.max(shown_cols.start)..x.saturating_add(spacing).min(shown_cols.end);
                 if block_cols.is_empty() {
                     continue;
                 }
-                // On the display, below i32::MAX: `visible` keeps only such pixels.
-                let top_left = Point::new(
-                    self.top_left.x.wrapping_add(block_cols.start as i32),
-                    self.top_left.y.wrapping_add(block_rows.start as i32),
-                );
                 let size = Size::new(block_cols.len() as u32, block_rows.len() as u32);
-                fill_block(display, &Rectangle::new(top_left, size), colour)?;
+                let block = Rectangle::new(corner(block_cols.start, block_rows.start), size);
+                fill_block(display, &block, colour)?;
             }
         }
         Ok(())
