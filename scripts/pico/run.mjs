@@ -10,6 +10,11 @@
 // cycles between its two readings of the frame timer (the frame) and in the stand-in ROM, the
 // bytes sent, and why the run stopped.
 //
+// The run takes the first frame and no more. After the frame and the frame-time text over it,
+// the program pauses, then orbits the camera and draws other views, which are not the host's
+// picture: its first read of the timer after the frame's end reading (the pause's) ends the
+// run, as does sleeping for good.
+//
 // rp2040js emulates one Cortex-M0+ core (core 1 never runs) and ships no boot ROM. So this
 // script starts the core where the boot ROM and the second-stage boot loader would leave it:
 // at the program's vector table after the 256-byte boot loader, with VTOR, SP and PC set from
@@ -40,9 +45,13 @@ const NANOS_PER_CYCLE = 1e9 / CLK_SYS_HZ;
 // driver's start-up delays take.
 const CYCLE_LIMIT = 400_000_000;
 // TIMERAWH, the timer's high word: rp2040-hal's `Timer::get_counter` reads it, its
-// microsecond delays (the driver's start-up) read only the low word. So the program's reads
-// of it are the frame's start and end.
+// microsecond delays (the driver's start-up, the pause after the frame) read only the low
+// word, TIMERAWL. So the program's reads of the high word are the frame's start and end.
 const TIMERAWH = 0x24;
+const TIMERAWL = 0x28;
+// rp2040-hal's `get_counter` reads the high word twice or more, a few cycles apart, around the
+// low word: reads closer than this are one reading of the timer.
+const READING_CYCLES = 100;
 const TIMER_BASE = 0x40054000;
 const FLASH = 0x10000000;
 const BOOT2_BYTES = 0x100;
@@ -232,14 +241,23 @@ spi.onTransmit = (value) => {
   spi.completeTransmit(0);
 };
 
-// The frame timer's readings: the cycle count at each read of TIMERAWH.
-// The frame timer's readings: the cycle count, and the cycles spent in the stand-in ROM so
-// far, at each read of TIMERAWH.
-const timerReads = [];
+// The frame timer's readings: at the first read of TIMERAWH of each, the cycle count and the
+// cycles spent in the stand-in ROM so far; `end`, the cycle count at its last read. The frame
+// is from the first reading to the second. A read of either word after those two, and apart
+// from the second, is the pause after the frame: `pastFrame` stops the run there.
+const readings = [];
+let pastFrame = false;
 const timer = mcu.findPeripheral(TIMER_BASE);
 const readTimer = timer.readUint32.bind(timer);
 timer.readUint32 = (offset) => {
-  if (offset === TIMERAWH) timerReads.push([core.cycles, romCycles]);
+  const last = readings.at(-1);
+  const apart = !last || core.cycles - last.end >= READING_CYCLES;
+  if (readings.length === 2 && apart && (offset === TIMERAWH || offset === TIMERAWL)) {
+    pastFrame = true;
+  } else if (offset === TIMERAWH) {
+    if (apart) readings.push({ start: core.cycles, rom: romCycles, end: core.cycles });
+    else last.end = core.cycles;
+  }
   return readTimer(offset);
 };
 
@@ -250,6 +268,10 @@ let romCycles = 0;
 let stopped = 'cycle limit';
 const wallStart = process.hrtime.bigint();
 while (core.cycles < CYCLE_LIMIT) {
+  if (pastFrame) {
+    stopped = 'past the frame';
+    break;
+  }
   if (core.waiting) {
     // Asleep (wfi/wfe). Only a timer alarm or a DMA transfer could wake it; with none due, the
     // program sleeps for good: after its frame, or stuck waiting for core 1.
@@ -271,21 +293,12 @@ const wallSeconds = Number(process.hrtime.bigint() - wallStart) / 1e9;
 
 writeFileSync(streamPath, Uint8Array.from(stream));
 
-// rp2040-hal's `get_counter` reads the high word twice or more, a few cycles apart, around
-// the low word: the reads fall into clusters, one per reading of the timer. The frame is from
-// the first cluster's first read to the last cluster's.
-const clusters = [];
-for (const read of timerReads) {
-  const last = clusters.at(-1);
-  if (last && read[0] - last.at(-1)[0] < 100) last.push(read);
-  else clusters.push([read]);
-}
 const frame =
-  clusters.length === 2
+  readings.length === 2
     ? {
-        start: clusters[0][0][0],
-        cycles: clusters[1][0][0] - clusters[0][0][0],
-        rom: clusters[1][0][1] - clusters[0][0][1],
+        start: readings[0].start,
+        cycles: readings[1].start - readings[0].start,
+        rom: readings[1].rom - readings[0].rom,
       }
     : null;
 console.log(
@@ -294,7 +307,7 @@ console.log(
     stopped,
     pc: `0x${core.PC.toString(16)}`,
     cycles: core.cycles,
-    timerReadings: clusters.length,
+    timerReadings: readings.length,
     frameStart: frame?.start ?? null,
     frameCycles: frame?.cycles ?? null,
     frameRomCycles: frame?.rom ?? null,

@@ -1,5 +1,6 @@
 //! fixray on a Raspberry Pi Pico: the demo scene on a 240 × 135 ST7789 display, rendered by
-//! both of the RP2040's Cortex-M0+ cores, then the frame time in the corner.
+//! both of the RP2040's Cortex-M0+ cores, then the frame time in the corner, then a slow orbit
+//! of the camera in progressive passes.
 //!
 //! The picture is cut into bands of `BAND_ROWS` rows. Core 0 renders the even bands, core 1
 //! the odd ones, each with `fixray::render_row` into a band buffer of `Rgb` rows; core 0 sends
@@ -18,6 +19,13 @@
 //! With the `single-core` feature core 0 renders every band itself and core 1 is never
 //! started; the bands, the DMA interface and the driver are the same. That is the build
 //! scripts/pico.sh runs in an emulator with one core and checks pixel for pixel.
+//!
+//! After a pause the camera circles the scene. Core 0 alone draws each new view as a
+//! progressive render (`Pass`): a coarse pass of 8 × 8 blocks fills the display quickly, and
+//! three finer ones sharpen it until it matches a full render of that view. A block goes to
+//! the display as one filled rectangle through the same driver; it is far smaller than a DMA
+//! buffer, so the CPU writes it. Core 1, if started, sleeps once its share of the first frame
+//! is done.
 
 #![no_std]
 #![no_main]
@@ -34,7 +42,8 @@ use embedded_graphics::pixelcolor::Rgb565;
 use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Rectangle;
 use embedded_graphics::text::{Baseline, Text};
-use fixray::{Camera, FromRgb, Rgb, Scene, demo, render_row};
+use embedded_hal::delay::DelayNs;
+use fixray::{Camera, DrawError, FromRgb, Pass, Rgb, Scene, Viewport, demo, render_row};
 use mipidsi::Builder;
 use mipidsi::models::ST7789;
 use mipidsi::options::{ColorInversion, Orientation, Rotation};
@@ -81,6 +90,22 @@ type Band = [Rgb; WIDTH * BAND_ROWS];
 
 /// The scene is built by the compiler and sits in flash; both cores read it.
 static SCENE: Scene<8> = demo::scene();
+
+/// The first frame and its time stay on the display this long, so the time can be read.
+const PAUSE_MS: u32 = 2000;
+
+/// The circle the eye follows, the same as the ESP32-C3 program's: centred near the middle of
+/// the demo's spheres and 15 units from it, so that at yaw 0 and pitch 0 the eye is where the
+/// demo camera is, looking the same way; raised 10° to look down on the floor a little, and
+/// turned 3° further for each view.
+const TARGET: [f32; 3] = [0.0, 0.0, -15.0];
+const DISTANCE: f32 = 15.0;
+const PITCH_DEGREES: f32 = 10.0;
+const YAW_STEP_DEGREES: u32 = 3;
+
+/// The coarsest pass's block side: it traces one pixel in 64, so a whole, blocky view shows
+/// after a small fraction of a frame's work.
+const COARSEST: u16 = 8;
 
 /// Core 1's stack: 16 KiB (a render takes well under 8 KiB on a Cortex-M0).
 #[cfg(not(feature = "single-core"))]
@@ -218,9 +243,58 @@ fn main() -> ! {
         .draw(&mut display)
         .unwrap();
 
+    // Polling the timer, as the driver's start-up delays do: no interrupt to set up. The
+    // emulator's run (scripts/pico/run.mjs) ends at this pause's first read of the timer, with
+    // the frame and its text sent.
+    timer.delay_ms(PAUSE_MS);
+    // Core 0's band buffer is free now: the passes use its first row. `orbit` returns only
+    // when the display fails; the core then sleeps, the display left as it is.
+    let _failed = orbit(&mut display, own);
+
     loop {
         cortex_m::asm::wfi();
     }
+}
+
+/// Orbits the camera about the scene, `YAW_STEP_DEGREES` a view, each view drawn in
+/// progressive passes. It returns only the error that stopped a view's drawing.
+fn orbit<D: DrawTarget<Color = Rgb565>>(display: &mut D, row: &mut [Rgb]) -> DrawError<D::Error> {
+    let mut yaw = 0;
+    loop {
+        yaw = (yaw + YAW_STEP_DEGREES) % 360;
+        // A camera the builder refuses is skipped: the display keeps the view before.
+        let Ok(camera) = orbit_camera(yaw) else {
+            continue;
+        };
+        if let Err(error) = draw_view(&camera, row, display) {
+            return error;
+        }
+    }
+}
+
+/// The orbit's camera at `yaw` degrees, the display's size. This is the view's only float
+/// work (rp2040-hal hands `f32` arithmetic to the boot ROM's routines); tracing is fixed point.
+fn orbit_camera(yaw: u32) -> Result<Camera, fixray::Error> {
+    Camera::orbit(TARGET, DISTANCE)
+        .yaw_degrees(yaw as f32)
+        .pitch_degrees(PITCH_DEGREES)
+        .size(Size::new(WIDTH as u32, HEIGHT as u32))
+        .build()
+}
+
+/// Draws the scene as `camera` sees it, pass by pass from spacing `COARSEST` down to 1: the
+/// first pass covers the display in blocks, the last leaves a full render's picture. `row`
+/// is scratch space for one row of the picture.
+fn draw_view<D: DrawTarget<Color = Rgb565>>(
+    camera: &Camera,
+    row: &mut [Rgb],
+    display: &mut D,
+) -> Result<(), DrawError<D::Error>> {
+    let view = Viewport::at(&SCENE, camera, Point::zero());
+    for pass in Pass::sequence(COARSEST)? {
+        view.render_pass(pass, row, display)?;
+    }
+    Ok(())
 }
 
 /// Core 1: renders the odd bands, alternating between its two buffers, and leaves each for
