@@ -167,29 +167,29 @@ impl<const N: usize> Eye<N> {
     /// The shared terms of rays from `origin` into `scene` that try the objects of `among`
     /// (bit `i` for object `i`).
     pub(crate) fn new<const L: usize>(scene: &Scene<N, L>, origin: Vec3, among: u64) -> Self {
-        // Made in place: the numerators are a few hundred bytes, and a value moved into the
-        // caller's would be copied.
-        let mut eye = Eye {
-            numerators: [Numerator::NONE; N],
-            planes: 0,
-            before_planes: 0,
+        let objects = scene.objects();
+        // Each plane's numerator, made where it is kept (an array of a few hundred bytes is
+        // not to be copied): the other objects' are `Numerator::NONE`.
+        let numerators = core::array::from_fn(|index| match objects.get(index) {
+            Some(Object {
+                shape: Shape::Plane(plane),
+                ..
+            }) => plane.numerator(origin),
+            _ => Numerator::NONE,
+        });
+        let planes = (objects.iter().enumerate().take(64))
+            .filter(|(_, object)| matches!(object.shape, Shape::Plane(_)))
+            .fold(0, |planes, (index, _)| planes | bits::bit(index));
+        let before_planes = if planes != 0 && among & !planes != 0 {
+            spheres_before_planes(scene, planes, among & !planes, &numerators, origin)
+        } else {
+            0
         };
-        for (index, (num, object)) in eye.numerators.iter_mut().zip(scene.objects()).enumerate() {
-            if let Shape::Plane(plane) = object.shape {
-                *num = plane.numerator(origin);
-                eye.planes |= if index < 64 { bits::bit(index) } else { 0 };
-            }
+        Eye {
+            numerators,
+            planes,
+            before_planes,
         }
-        if eye.planes != 0 && among & !eye.planes != 0 {
-            eye.before_planes = spheres_before_planes(
-                scene,
-                eye.planes,
-                among & !eye.planes,
-                &eye.numerators,
-                origin,
-            );
-        }
-        eye
     }
 
     /// Plane `index`'s numerator of Eq. 4.2 for rays from the eye (0 for anything else).
