@@ -111,13 +111,20 @@ impl<const N: usize, const L: usize> Viewport<'_, N, L> {
                 // window for a driver to open, each pixel its block's colour.
                 let size = Size::new(shown_cols.len() as u32, block_rows.len() as u32);
                 let band = Rectangle::new(corner(shown_cols.start, block_rows.start), size);
-                let left = self.top_left.x;
-                let colour_at = |p: Point| {
-                    let x = p.x.wrapping_sub(left) as u32;
-                    let block = colours.get((x / spacing) as usize).copied();
-                    D::Color::from_rgb(block.unwrap_or(Rgb::BLACK), p)
-                };
-                let pixels = band.points().map(colour_at);
+                // Row by row, the block stepped at its edges: no division a pixel (the
+                // Cortex-M0 has no divider).
+                let first_block = shown_cols.start / spacing;
+                let cols = shown_cols.clone();
+                let pixels = block_rows.clone().flat_map(|y| {
+                    let (mut block, mut edge) = (first_block as usize, (first_block + 1) * spacing);
+                    cols.clone().map(move |x| {
+                        if x == edge {
+                            (block, edge) = (block + 1, edge + spacing);
+                        }
+                        let colour = colours.get(block).copied().unwrap_or(Rgb::BLACK);
+                        D::Color::from_rgb(colour, corner(x, y))
+                    })
+                });
                 display
                     .fill_contiguous(&band, pixels)
                     .map_err(DrawError::Display)?;
