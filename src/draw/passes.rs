@@ -111,20 +111,12 @@ impl<const N: usize, const L: usize> Viewport<'_, N, L> {
                 // window for a driver to open, each pixel its block's colour.
                 let size = Size::new(shown_cols.len() as u32, block_rows.len() as u32);
                 let band = Rectangle::new(corner(shown_cols.start, block_rows.start), size);
-                // Row by row, the block stepped at its edges: no division a pixel (the
-                // Cortex-M0 has no divider).
-                let first_block = shown_cols.start / spacing;
-                let cols = shown_cols.clone();
-                let pixels = block_rows.clone().flat_map(|y| {
-                    let (mut block, mut edge) = (first_block as usize, (first_block + 1) * spacing);
-                    cols.clone().map(move |x| {
-                        if x == edge {
-                            (block, edge) = (block + 1, edge + spacing);
-                        }
-                        let colour = colours.get(block).copied().unwrap_or(Rgb::BLACK);
-                        D::Color::from_rgb(colour, corner(x, y))
-                    })
-                });
+                let pixels = BandPixels::<D::Color>::new(
+                    colours,
+                    spacing,
+                    (shown_cols.clone(), block_rows.clone()),
+                    self.top_left,
+                );
                 display
                     .fill_contiguous(&band, pixels)
                     .map_err(DrawError::Display)?;
@@ -162,4 +154,76 @@ where
         display.fill_contiguous(area, area.points().map(at))
     };
     result.map_err(DrawError::Display)
+}
+
+/// The pixels of a band of a pass's row whose blocks tile it, in the order `fill_contiguous`
+/// takes them (row by row): each its block's traced colour (`colours[i]` for columns
+/// `i·spacing` on), converted at its own place on the display (`origin` plus its picture
+/// column and row). The block is stepped at its edges, not found by a division a pixel (the
+/// Cortex-M0 has no divider), in a loop of its own rather than a chain of adapters.
+struct BandPixels<'a, C> {
+    colours: &'a [Rgb],
+    spacing: u32,
+    cols: Range<u32>,
+    rows_end: u32,
+    origin: Point,
+    /// The block and the column past it where each row starts.
+    first: (usize, u32),
+    /// The next pixel's column and row, its block and that block's end.
+    x: u32,
+    y: u32,
+    block: usize,
+    edge: u32,
+    colour: core::marker::PhantomData<C>,
+}
+
+impl<'a, C> BandPixels<'a, C> {
+    fn new(
+        colours: &'a [Rgb],
+        spacing: u32,
+        (cols, rows): (Range<u32>, Range<u32>),
+        origin: Point,
+    ) -> Self {
+        let spacing = spacing.max(1);
+        let block = cols.start / spacing;
+        let first = (block as usize, (block + 1) * spacing);
+        BandPixels {
+            colours,
+            spacing,
+            x: cols.start,
+            cols,
+            y: rows.start,
+            rows_end: rows.end,
+            origin,
+            first,
+            block: first.0,
+            edge: first.1,
+            colour: core::marker::PhantomData,
+        }
+    }
+}
+
+impl<C: FromRgb> Iterator for BandPixels<'_, C> {
+    type Item = C;
+
+    fn next(&mut self) -> Option<C> {
+        if self.x >= self.cols.end {
+            (self.x, self.y) = (self.cols.start, self.y + 1);
+            (self.block, self.edge) = self.first;
+        }
+        if self.y >= self.rows_end || self.x >= self.cols.end {
+            return None;
+        }
+        if self.x == self.edge {
+            (self.block, self.edge) = (self.block + 1, self.edge + self.spacing);
+        }
+        let colour = self.colours.get(self.block).copied().unwrap_or(Rgb::BLACK);
+        // On the display, below i32::MAX: `visible` keeps only such pixels.
+        let at = Point::new(
+            self.origin.x.wrapping_add(self.x as i32),
+            self.origin.y.wrapping_add(self.y as i32),
+        );
+        self.x += 1;
+        Some(C::from_rgb(colour, at))
+    }
 }
