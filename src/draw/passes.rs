@@ -1,6 +1,6 @@
 //! [`Viewport::render_pass`]: a progressive render's pass onto a display, each traced pixel's
-//! block filled: a row whose blocks tile their band as one fill of the band, the others one
-//! filled rectangle a block.
+//! block filled: a row of small blocks that tile their band as one fill of the band, the
+//! others one filled rectangle a block.
 
 use core::ops::Range;
 
@@ -16,13 +16,20 @@ use crate::error::Error;
 use crate::render::progressive::{Pass, render_pass_row};
 use crate::scene::colour::Rgb;
 
+/// The widest blocks a row of which is drawn as one fill of its band. An address window costs
+/// a display on a serial bus about as many bytes as five or six 16-bit pixels, and its driver
+/// more work than a pixel: for blocks of 4 × 4 and smaller a window each costs more than the
+/// band's one, and larger blocks go faster as solid fills of their own (one colour repeated,
+/// where the colour type does not dither) than as the band's pixels one by one.
+const BAND_FILL_SPACING: u32 = 4;
+
 impl<const N: usize, const L: usize> Viewport<'_, N, L> {
     /// Draws pass `pass` of a progressive render ([`Pass::sequence`]) onto `display`: each
     /// pixel the pass traces, with its block (`spacing × spacing` from it, cut at the
     /// picture's edges), as filled rectangles, so that a driver's fast fill is used: where a
-    /// row's blocks tile their band (every pixel of the first pass, two thirds of the
-    /// others'), the band as one `fill_contiguous`, one window for the driver; elsewhere each
-    /// block as one `fill_solid` (per pixel where the colour type dithers). Drawn
+    /// row's blocks of at most 4 × 4 tile their band (two thirds of a later pass's pixels),
+    /// the band as one `fill_contiguous`, one window for the driver; elsewhere each block as
+    /// one `fill_solid` (per pixel where the colour type dithers). Drawn
     /// over every pass of a sequence, in order, the display shows what
     /// [`render`](Self::render) draws, bit for bit, dithering included; begun again from a
     /// first pass, as when the view moves, nothing of the sequence before is left.
@@ -106,7 +113,7 @@ impl<const N: usize, const L: usize> Viewport<'_, N, L> {
                     self.top_left.y.wrapping_add(y as i32),
                 )
             };
-            if step == spacing {
+            if step == spacing && spacing <= BAND_FILL_SPACING {
                 // The row's blocks tile their band (`first` is 0): one fill of the band, one
                 // window for a driver to open, each pixel its block's colour.
                 let size = Size::new(shown_cols.len() as u32, block_rows.len() as u32);
