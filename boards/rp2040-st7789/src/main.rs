@@ -22,10 +22,12 @@
 //!
 //! After a pause the camera circles the scene. Core 0 alone draws each new view as a
 //! progressive render (`Pass`): a coarse pass of 8 × 8 blocks fills the display quickly, and
-//! three finer ones sharpen it until it matches a full render of that view. A block goes to
-//! the display as one filled rectangle through the same driver; it is far smaller than a DMA
-//! buffer, so the CPU writes it. Core 1, if started, sleeps once its share of the first frame
-//! is done.
+//! three finer ones sharpen it until it matches a full render of that view. The blocks go to
+//! the display through the same driver: in the finer passes a row of blocks that tile their
+//! band (every other row a pass traces) is one fill of the whole band, one address window;
+//! every other block, the first pass's included, is a fill of its own. None of it fills a
+//! DMA buffer, so the CPU writes it. Core 1, if started, sleeps once its share of the first
+//! frame is done.
 
 #![no_std]
 #![no_main]
