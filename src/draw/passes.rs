@@ -106,13 +106,7 @@ impl<const N: usize, const L: usize> Viewport<'_, N, L> {
             }
             let count = render_pass_row(self.scene, self.camera, pass, y, buffer)?;
             let colours = buffer.get(..count).unwrap_or_default();
-            // On the display, below i32::MAX: `visible` keeps only such pixels.
-            let corner = |x: u32, y: u32| {
-                Point::new(
-                    self.top_left.x.wrapping_add(x as i32),
-                    self.top_left.y.wrapping_add(y as i32),
-                )
-            };
+            let corner = |x, y| on_display(self.top_left, x, y);
             if step == spacing && spacing <= BAND_FILL_SPACING {
                 // The row's blocks tile their band (`first` is 0): one fill of the band, one
                 // window for a driver to open, each pixel its block's colour.
@@ -161,6 +155,15 @@ where
         display.fill_contiguous(area, area.points().map(at))
     };
     result.map_err(DrawError::Display)
+}
+
+/// Picture column `x` and row `y` on the display, the picture's top left at `origin`: below
+/// `i32::MAX`, as `visible` keeps only such pixels.
+fn on_display(origin: Point, x: u32, y: u32) -> Point {
+    Point::new(
+        origin.x.wrapping_add(x as i32),
+        origin.y.wrapping_add(y as i32),
+    )
 }
 
 /// The pixels of a band of a pass's row whose blocks tile it, in the order `fill_contiguous`
@@ -225,11 +228,7 @@ impl<C: FromRgb> Iterator for BandPixels<'_, C> {
             (self.block, self.edge) = (self.block + 1, self.edge + self.spacing);
         }
         let colour = self.colours.get(self.block).copied().unwrap_or(Rgb::BLACK);
-        // On the display, below i32::MAX: `visible` keeps only such pixels.
-        let at = Point::new(
-            self.origin.x.wrapping_add(self.x as i32),
-            self.origin.y.wrapping_add(self.y as i32),
-        );
+        let at = on_display(self.origin, self.x, self.y);
         self.x += 1;
         Some(C::from_rgb(colour, at))
     }

@@ -118,7 +118,8 @@ pub(crate) fn render_every<const N: usize, const L: usize>(
         true => (cols, shift),
         false => (cols.start..cols.end.min(cols.start.saturating_add(1)), 0),
     };
-    // Where nothing can be hit the sky needs no rays (as in `render_row`).
+    // Where nothing can be hit the sky needs no rays: a plain one is its colour, a gradient
+    // reads one component of each ray's direction.
     let sky = scene.background().plain_colour();
     let (start, stride) = (cols.start, 1 << shift);
     let at = (scene, camera, row);
@@ -270,6 +271,8 @@ fn cast_row<T: ?Sized, const N: usize, const L: usize>(
     let mut runs = Runs::new(scene, camera, row);
     runs.limit(cols);
     let shadowers = *runs.shadowers();
+    // The walk's step, `2^shift` columns: the row's, for every run.
+    let step = camera.column_step().steps(1 << shift);
     while let Some((first_col, end_col, here)) = runs.next_run() {
         let index = |c: u16| ((u32::from(c - start) + (1 << shift) - 1) >> shift) as u16;
         let (first, end) = (index(first_col), index(end_col));
@@ -298,7 +301,7 @@ fn cast_row<T: ?Sized, const N: usize, const L: usize>(
                 index,
                 num,
                 towards,
-                step: camera.column_step().steps(1 << shift),
+                step,
             };
             whole(target, first, end, Run::Matte(&run), &shadowers);
             continue;
@@ -307,7 +310,6 @@ fn cast_row<T: ?Sized, const N: usize, const L: usize>(
             Some(index) => scene.shoot_one_from_eye(ray, index, eye),
             None => scene.shoot_from_eye(ray, here, eye),
         };
-        let step = camera.column_step().steps(1 << shift);
         cast_run(
             camera,
             runs.towards(col),

@@ -55,7 +55,8 @@ pub(crate) fn row_shadowers<const N: usize, const L: usize>(
     // planes go outermost: the angle between a plane and the row's is the lights' to share.
     let mut ruled_out = [!0u32; L];
     let mut rest = planes;
-    while rest != 0 && ruled_out.iter().any(|&r| r != 0) {
+    let lights = scene.lights().len();
+    while rest != 0 && ruled_out.iter().take(lights).any(|&r| r != 0) {
         let index = rest.trailing_zeros() as usize;
         rest &= rest - 1;
         let Some(Shape::Plane(plane)) = objects.get(index).map(|o| o.shape) else {
@@ -71,7 +72,7 @@ pub(crate) fn row_shadowers<const N: usize, const L: usize>(
             }
         }
     }
-    for (set, out) in sets.iter_mut().zip(ruled_out).take(scene.lights().len()) {
+    for (set, out) in sets.iter_mut().zip(ruled_out).take(lights) {
         *set = !out;
     }
     sets
