@@ -278,7 +278,13 @@ impl Mantissa {
     #[inline]
     pub(crate) fn over(self, den: u64) -> Scale {
         debug_assert!(den > 0, "Mantissa::over: zero divisor");
-        let (y, den_bits) = inverse(den);
+        self.times(inverse(den))
+    }
+
+    /// [`Mantissa::over`] given the divisor's [`inverse`]: several dividends over one divisor
+    /// share it.
+    #[inline]
+    pub(crate) fn times(self, (y, den_bits): (u32, u32)) -> Scale {
         let q = wide_mul_u32(self.top, y);
         Scale {
             m: (q >> 32) as i32,

@@ -4,11 +4,10 @@
 //! each pixel's ray on its own ([`Camera::ray`]); these serve the runs, the culling, the
 //! shadow sets of a row and the damage of an edit, each held to the plain path by the tests.
 
-use core::num::NonZeroU64;
-
 use crate::geometry::ray::Ray;
 use crate::numbers::fx::{self, Fx};
 use crate::numbers::isqrt::isqrt;
+use crate::numbers::reciprocal::{Mantissa, Scale, inverse};
 use crate::numbers::vec3::Vec3;
 use crate::render::camera::{Camera, MAX_PIXELS, unit_of_exact};
 
@@ -114,13 +113,32 @@ impl Camera {
         // √k rounded up, so that the tangents' spread is not understated.
         let root = isqrt((product(x, x) + below) as u64) as i32 + 1;
         let (middle, spread) = (product(x, z), product(r, root));
-        // The slopes in Q16.16, rounded towards zero: a numerator below 2⁴³, shifted, fits.
-        let below = NonZeroU64::new(below as u64)?;
-        let slope = |num: i64| {
-            let size = ((num.unsigned_abs() << 16) / below) as i64;
-            if num < 0 { -size } else { size }
+        // The slopes in Q16.16 from one reciprocal of their divisor, not two divisions (64-bit
+        // ones are long library calls on every chip): each quotient within a relative 2⁻²⁷
+        // ([`Mantissa::over`]) and floored, so within `|e|·2⁻²⁷ + 1` raw of the exact slope
+        // `e`, less than `|s|·2⁻²⁶ + 1` of the found one `s`; moved `⌊|s|·2⁻²⁶⌋ + 2` outwards,
+        // the low one down and the high one up, the span holds the exact slopes' whatever the
+        // rounding. The quotient of a numerator below 2⁴³ and a divisor of at least 2⁸ is
+        // below 2³⁵, and in Q16.16 fits.
+        if below <= 0 {
+            return None; // not reached: `z − r` is at least 16
+        }
+        let reciprocal = inverse(below as u64);
+        let slope = |num: i64, outwards: i64| {
+            let size = match num.unsigned_abs() {
+                0 => 0,
+                size => {
+                    let Scale { m, shift } = Mantissa::new(size).times(reciprocal);
+                    match 16 - shift {
+                        up @ 0.. => i64::from(m) << up.min(31),
+                        down => i64::from(m) >> (-down).min(63),
+                    }
+                }
+            };
+            let size = if num < 0 { -size } else { size };
+            size + outwards * ((size.abs() >> 26) + 2)
         };
-        let (low, high) = (slope(middle - spread), slope(middle + spread));
+        let (low, high) = (slope(middle - spread, -1), slope(middle + spread, 1));
         // f · slope in whole pixels (Q16.16 × Q16.16 / 2³²), floored, in two exact parts:
         // `f` is below 2³¹ and the slope's low word below 2³², its high word below 2³¹.
         let distance = self.view.to_bits();

@@ -38,7 +38,9 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     }
 
     /// `Scene::seen_from_row` given the row's plane's unit normal `normal`
-    /// (`Camera::row_plane_normal`), which `None` leaves every object in.
+    /// (`Camera::row_plane_normal`), which `None` leaves every object in: the test `Runs`
+    /// makes of each sphere ([`near_row_plane`]).
+    #[cfg(feature = "internals")]
     pub(crate) fn seen_from_row_plane(&self, eye: Vec3, normal: Option<Vec3>) -> u64 {
         let Some(normal) = normal else {
             return !0;
@@ -259,9 +261,10 @@ fn before_plane(sphere: &Sphere, plane: &Plane, from_eye: &Numerator, eye: Vec3)
     let (eye_needs, centre_needs) = (margin << 16, (radius + margin) << 16);
     // Heights `n·(x − p0)` are the numerators' (`−n·(p_r − p0)`) negated; turned so that the
     // eye's is positive.
+    let above = plane.normal().dot_wide_exact(centre - plane.point());
     let (eye_height, centre_height) = match -from_eye.value {
-        height @ 0.. => (height, -plane.numerator(centre).value),
-        height => (-height, plane.numerator(centre).value),
+        height @ 0.. => (height, above),
+        height => (-height, -above),
     };
     eye_height >= eye_needs && centre_height >= centre_needs
 }
@@ -270,9 +273,17 @@ fn before_plane(sphere: &Sphere, plane: &Plane, from_eye: &Numerator, eye: Vec3)
 /// `normal` (see `Camera::row_plane_normal`): `Scene::seen_from_row_plane`'s test for one sphere,
 /// which the damage of an edit repeats exactly.
 pub(crate) fn near_row_plane(sphere: &Sphere, eye: Vec3, normal: Vec3) -> bool {
+    row_offset(sphere, eye, normal).is_some()
+}
+
+/// The height of `sphere`'s centre above the row's plane, `n·(C − eye)` rounded to nearest,
+/// where the sphere may meet a ray of the row ([`near_row_plane`]), for [`row_ball`]; `None`
+/// where it cannot.
+pub(crate) fn row_offset(sphere: &Sphere, eye: Vec3, normal: Vec3) -> Option<Fx> {
     let to_centre = sphere.centre() - eye;
     let margin = Fx::from_bits(stray(to_centre.l1_raw()) as i32);
-    normal.dot_units(to_centre).abs() <= sphere.radius() + margin
+    let height = normal.dot_units(to_centre);
+    (height.abs() <= sphere.radius() + margin).then_some(height)
 }
 
 /// How far, in raw units, a row's rays may lie from the row's plane at a distance of at most
@@ -290,6 +301,7 @@ const fn stray(reach: i64) -> i64 {
 /// A ball that holds every point of `sphere` which a ray of the row whose plane through `eye`
 /// has the unit normal `normal` can meet, as `(centre, radius)`: smaller than the sphere on
 /// every row but those through its middle, so its columns (`Camera::column_span`) are fewer.
+/// `height` is the centre's height above the plane as [`row_offset`] finds it.
 ///
 /// The row's rays stray from their plane by less than `margin` at the sphere (as
 /// [`near_row_plane`] bounds it, here out to the sphere's far side). The points of the sphere
@@ -300,15 +312,15 @@ const fn stray(reach: i64) -> i64 {
 /// rounding of `n` and of `C'`, far more than either; where that is not smaller than `r`, the
 /// sphere itself is the ball.
 // In raw integers: once a row for each sphere near it, and short.
-pub(crate) fn row_ball(sphere: &Sphere, eye: Vec3, normal: Vec3) -> (Vec3, Fx) {
+pub(crate) fn row_ball(sphere: &Sphere, eye: Vec3, normal: Vec3, height: Fx) -> (Vec3, Fx) {
     let (centre, r) = (sphere.centre(), sphere.radius());
     let to_centre = centre.minus(eye);
     // Raw units (2⁻¹⁶): centres, eyes and radii lie within ±1024, so every square below is
     // under 2⁵⁵ and every sum fits.
     let radius = r.to_bits() as i64;
     let margin = stray(to_centre.l1_raw() + radius);
-    // n·(C − eye), rounded down: a unit off at most, which the margin covers.
-    let d = normal.dot_wide_exact(to_centre) >> 16;
+    // n·(C − eye), rounded to nearest: half a unit off at most, which the margin covers.
+    let d = height.to_bits() as i64;
     let off = (d.abs() - margin).max(0);
     // Each factor below 2²⁸ (radii, distances and margins of points within ±1024): the
     // products of two `i32`s, as the work of a row takes them (`fx::wide_mul`).
@@ -396,10 +408,10 @@ mod tests {
                 let Some(normal) = camera.row_plane_normal(row) else {
                     continue;
                 };
-                if !near_row_plane(&sphere, camera.eye(), normal) {
+                let Some(height) = row_offset(&sphere, camera.eye(), normal) else {
                     continue;
-                }
-                let (centre, radius) = row_ball(&sphere, camera.eye(), normal);
+                };
+                let (centre, radius) = row_ball(&sphere, camera.eye(), normal, height);
                 let Some((first, last)) = camera.column_span(centre, radius) else {
                     continue;
                 };

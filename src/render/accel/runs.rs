@@ -4,7 +4,7 @@
 use crate::geometry::shape::Shape;
 use crate::numbers::bits;
 use crate::numbers::vec3::Vec3;
-use crate::render::accel::cull::{Eye, row_ball};
+use crate::render::accel::cull::{Eye, row_ball, row_offset};
 use crate::render::accel::shadow_rows::row_shadowers;
 use crate::render::camera::Camera;
 use crate::scene::Scene;
@@ -35,6 +35,8 @@ pub(crate) struct Runs<'a, const N: usize, const L: usize> {
     step: Vec3,
     col: u16,
     cols: u16,
+    /// The row's width.
+    width: u16,
 }
 
 impl<'a, const N: usize, const L: usize> Runs<'a, N, L> {
@@ -51,14 +53,22 @@ impl<'a, const N: usize, const L: usize> Runs<'a, N, L> {
         let beyond = if own_bits == 63 { 1 << 63 } else { 0 };
         let start = camera.row_start(row);
         let row_normal = camera.row_plane_normal_from(start);
-        let among = scene.seen_from_row_plane(camera.eye(), row_normal) & scene.present() | beyond;
-        let (mut bounded, mut spans, mut planes) = (0, [(0, 0); N], 0);
+        let (eye, present) = (camera.eye(), scene.present());
+        // The spheres the row's plane misses leave `among` (`Scene::seen_from_row_plane`'s
+        // test, made here with the height it finds kept for the sphere's ball).
+        let (mut among, mut bounded, mut spans, mut planes) = (!0u64, 0, [(0, 0); N], 0);
         for (index, object) in scene.objects().iter().enumerate().take(own_bits) {
             match object.shape {
-                Shape::Sphere(sphere) if bits::has(among, index) => {
+                Shape::Sphere(sphere) if bits::has(present, index) => {
                     // What the row's rays can meet of the sphere, and the columns that holds.
                     let (centre, radius) = match row_normal {
-                        Some(normal) => row_ball(&sphere, camera.eye(), normal),
+                        Some(normal) => match row_offset(&sphere, eye, normal) {
+                            Some(height) => row_ball(&sphere, eye, normal, height),
+                            None => {
+                                among &= !bits::bit(index);
+                                continue;
+                            }
+                        },
                         None => (sphere.centre(), sphere.radius()),
                     };
                     if let (Some(span), Some(slot)) =
@@ -72,6 +82,7 @@ impl<'a, const N: usize, const L: usize> Runs<'a, N, L> {
                 Shape::Sphere(_) => {}
             }
         }
+        let among = among & present | beyond;
         let shadowers = match row_normal {
             Some(row_normal) => row_shadowers(scene, camera.eye(), row_normal, planes & among),
             None => [!0; L],
@@ -90,6 +101,7 @@ impl<'a, const N: usize, const L: usize> Runs<'a, N, L> {
             step: camera.column_step(),
             col: 0,
             cols: camera.cols(),
+            width: camera.cols(),
         }
     }
 
@@ -99,11 +111,13 @@ impl<'a, const N: usize, const L: usize> Runs<'a, N, L> {
         &self.shadowers
     }
 
-    /// Limits the walk to columns `cols` (clipped to the row): started and stopped there it
-    /// finds the runs of the whole row cut at those columns, since each run is found from the
-    /// column it starts at. In place: a `Runs` is a few hundred bytes, not to be copied.
+    /// Limits the walk to columns `cols` (clipped to the row), wherever an earlier walk
+    /// stopped: started and stopped there it finds the runs of the whole row cut at those
+    /// columns, since each run is found from the column it starts at. So one set-up serves
+    /// several walks along its row. In place: a `Runs` is a few hundred bytes, not to be
+    /// copied.
     pub(crate) fn limit(&mut self, cols: core::ops::Range<u16>) {
-        self.cols = cols.end.min(self.cols);
+        self.cols = cols.end.min(self.width);
         self.col = cols.start.min(self.cols);
     }
 
