@@ -28,8 +28,8 @@
 //! With `--progressive DIR` it draws the picture in passes instead, as a display shows a frame
 //! that takes long to trace: the first pass traces every 8th pixel of every 8th row
 //! (`--spacing N` starts at another power of two up to 64) and paints each one's block, each
-//! next pass halves the spacing and traces only the pixels no pass traced before, and the
-//! last, at spacing 1, completes the picture. [`Viewport::render_pass`] draws each pass onto
+//! next pass down to spacing 4 halves the spacing and traces only the pixels no pass traced
+//! before, and the last two complete the even rows, then the odd ones. [`Viewport::render_pass`] draws each pass onto
 //! the simulator display, written after each pass to `DIR/pass-1.png`, `DIR/pass-2.png`, …;
 //! the display the passes leave is checked against a plain render.
 //!
@@ -401,11 +401,7 @@ mod progressive {
     /// traces, as [`Pass::columns`] gives them (counted, not traced again: `render_pass_row`
     /// would give the same count for a second trace of the row).
     fn traced(pass: Pass, cols: u32, rows: u32) -> u32 {
-        (0..rows)
-            .filter_map(|y| pass.columns(y))
-            .filter(|&(first, _)| first < cols)
-            .map(|(first, step)| (cols - first).div_ceil(step))
-            .sum()
+        (0..rows).map(|y| pass.columns(y).count_below(cols)).sum()
     }
 
     fn passes<C>(options: &Options, dir: &Path) -> Result<(), String>

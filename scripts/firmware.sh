@@ -505,7 +505,7 @@ tables() {
     done
     echo
     echo
-    echo "Progressive passes (\`firmware/src/bin/progressive.rs\`): the demo scene at 160 × 128 in passes of spacing 8, 4, 2 and 1 (\`Pass::sequence(8)\`), instructions against \`fixed\`'s frame:"
+    echo "Progressive passes (\`firmware/src/bin/progressive.rs\`): the demo scene at 160 × 128 in the four passes of \`Pass::sequence(8)\` (grids of 8 and 4, then the even rows, then the odd rows), instructions against \`fixed\`'s frame:"
     echo
     chip_columns passes
     printf '| the first pass (1/64 of the pixels) / full |'

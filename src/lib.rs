@@ -74,7 +74,7 @@
 //!   path's.
 //!   `changes.rs` bounds the pixels an edit of the scene can change ([`Damage`]) and
 //!   redraws only those ([`render_changes`], [`render_row_span`]), for animations;
-//!   `progressive.rs` draws a frame in passes of halving spacing ([`Pass`],
+//!   `progressive.rs` draws a frame in passes, coarse grids then whole rows ([`Pass`],
 //!   [`render_pass_row`], [`render_pass`]) that end exactly on it, for a moving view.
 //! - [`draw`]: onto any `embedded-graphics` display at a point, clipped to it: a
 //!   [`Viewport`] drawn as one [`Picture`] (an embedded-graphics `Drawable`), band by band,

@@ -113,7 +113,7 @@ fn each_pass_is_written_and_the_last_is_the_plain_render() {
 /// picture, in every colour format (the dithered ones too).
 #[test]
 fn spacing_chooses_the_first_pass_and_the_last_is_the_png() {
-    for (spacing, count) in [("1", 1), ("2", 2), ("32", 6), ("64", 7)] {
+    for (spacing, count) in [("1", 1), ("2", 3), ("32", 6), ("64", 7)] {
         let dir = temp_dir(&format!("spacing-{spacing}"));
         let stdout = run_ok(&[
             "--progressive",

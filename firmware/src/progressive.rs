@@ -52,16 +52,13 @@ pub fn run(mut ticks: impl FnMut() -> u32) -> Result<Totals, Error> {
             let traced = render_pass_row(scene, &camera, pass, y, &mut row);
             totals.pass_ticks[k] += u64::from(ticks().wrapping_sub(before));
             let count = traced?;
-            let Some((first, step)) = pass.columns(y) else {
+            if count == 0 {
                 continue;
-            };
+            }
             let pixels = row.get(..count).unwrap_or_default();
             hash.update(pixels);
-            for (i, &colour) in (0..).zip(pixels) {
-                totals.passes_digest =
-                    totals
-                        .passes_digest
-                        .wrapping_add(digest(first + i * step, y, colour));
+            for (&colour, x) in pixels.iter().zip(pass.columns(y).below(COLS)) {
+                totals.passes_digest = totals.passes_digest.wrapping_add(digest(x, y, colour));
             }
             totals.pass_pixels[k] += count as u32;
         }

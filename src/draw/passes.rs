@@ -1,6 +1,7 @@
 //! [`Viewport::render_pass`]: a progressive render's pass onto a display, each traced pixel's
 //! block filled: a row of small blocks that tile their band as one fill of the band, the
-//! others one filled rectangle a block.
+//! three pixels between the fourths of an even row as one fill, the others one filled
+//! rectangle a block.
 
 use core::ops::Range;
 
@@ -25,11 +26,12 @@ const BAND_FILL_SPACING: u32 = 4;
 
 impl<const N: usize, const L: usize> Viewport<'_, N, L> {
     /// Draws pass `pass` of a progressive render ([`Pass::sequence`]) onto `display`: each
-    /// pixel the pass traces, with its block (`spacing × spacing` from it, cut at the
-    /// picture's edges), as filled rectangles, so that a driver's fast fill is used: where a
-    /// row's blocks of at most 4 × 4 tile their band (two thirds of a later pass's pixels),
-    /// the band as one `fill_contiguous`, one window for the driver; elsewhere each block as
-    /// one `fill_solid` (per pixel where the colour type dithers). Drawn
+    /// pixel the pass traces, with its block ([`Pass::block`] from it, cut at the picture's
+    /// edges), as filled rectangles, so that a driver's fast fill is used: where a row's
+    /// blocks of at most 4 × 4 tile their band (all the odd rows, half the even ones, two
+    /// thirds of a grid's), the band as one `fill_contiguous`, one window for the driver; in
+    /// the other even rows, each three pixels between the fourths a grid traced as one;
+    /// elsewhere each block as one `fill_solid` (per pixel where the colour type dithers). Drawn
     /// over every pass of a sequence, in order, the display shows what
     /// [`render`](Self::render) draws, bit for bit, dithering included; begun again from a
     /// first pass, as when the view moves, nothing of the sequence before is left.
@@ -95,26 +97,30 @@ impl<const N: usize, const L: usize> Viewport<'_, N, L> {
         if shown_cols.is_empty() {
             return Ok(());
         }
-        let spacing = u32::from(pass.spacing());
+        let block = pass.block();
+        let (block_width, block_height) = (block.width, block.height);
         for y in rows {
-            let Some((first, step)) = pass.columns(y) else {
-                continue;
-            };
-            let block_rows = y.max(shown_rows.start)..y.saturating_add(spacing).min(shown_rows.end);
-            if block_rows.is_empty() {
+            let columns = pass.columns(y);
+            let block_rows =
+                y.max(shown_rows.start)..y.saturating_add(block_height).min(shown_rows.end);
+            if columns.count_below(width as u32) == 0 || block_rows.is_empty() {
                 continue;
             }
             let count = render_pass_row(self.scene, self.camera, pass, y, buffer)?;
             let colours = buffer.get(..count).unwrap_or_default();
             let corner = |x, y| on_display(self.top_left, x, y);
-            if step == spacing && spacing <= BAND_FILL_SPACING {
-                // The row's blocks tile their band (`first` is 0): one fill of the band, one
-                // window for a driver to open, each pixel its block's colour.
+            let mut runs = columns;
+            if let (Some((0, step)), None) = (runs.next(), runs.next())
+                && step == block_width
+                && step <= BAND_FILL_SPACING
+            {
+                // The row's blocks tile their band: one fill of the band, one window for a
+                // driver to open, each pixel its block's colour.
                 let size = Size::new(shown_cols.len() as u32, block_rows.len() as u32);
                 let band = Rectangle::new(corner(shown_cols.start, block_rows.start), size);
                 let pixels = BandPixels::<D::Color>::new(
-                    colours,
-                    spacing,
+                    (colours, 0),
+                    step,
                     (shown_cols.clone(), block_rows.clone()),
                     self.top_left,
                 );
@@ -123,10 +129,36 @@ impl<const N: usize, const L: usize> Viewport<'_, N, L> {
                     .map_err(DrawError::Display)?;
                 continue;
             }
-            for (i, &colour) in (0..).zip(colours) {
-                let x = first + i * step;
+            let mut runs = columns;
+            if let (Some((1, 2)), Some((2, 4))) = (runs.next(), runs.next()) {
+                // An even row a grid of 4 traced: three pixels between each fourth, one window
+                // for the three (their colours in the order of the columns: an odd one, the
+                // one two past a fourth, the next odd one).
+                let odd = width / 2;
+                for (k, x) in (1..width as u32).step_by(4).enumerate() {
+                    let colour = |i: usize| colours.get(i).copied().unwrap_or(Rgb::BLACK);
+                    let three = [colour(2 * k), colour(odd + k), colour(2 * k + 1)];
+                    let group_cols = x.max(shown_cols.start)..(x + 3).min(shown_cols.end);
+                    if group_cols.is_empty() {
+                        continue;
+                    }
+                    let size = Size::new(group_cols.len() as u32, block_rows.len() as u32);
+                    let group = Rectangle::new(corner(group_cols.start, block_rows.start), size);
+                    let pixels = BandPixels::<D::Color>::new(
+                        (&three, x),
+                        1,
+                        (group_cols, block_rows.clone()),
+                        self.top_left,
+                    );
+                    display
+                        .fill_contiguous(&group, pixels)
+                        .map_err(DrawError::Display)?;
+                }
+                continue;
+            }
+            for (&colour, x) in colours.iter().zip(columns.below(width as u32)) {
                 let block_cols =
-                    x.max(shown_cols.start)..x.saturating_add(spacing).min(shown_cols.end);
+                    x.max(shown_cols.start)..x.saturating_add(block_width).min(shown_cols.end);
                 if block_cols.is_empty() {
                     continue;
                 }
@@ -168,8 +200,8 @@ fn on_display(origin: Point, x: u32, y: u32) -> Point {
 
 /// The pixels of a band of a pass's row whose blocks tile it, in the order `fill_contiguous`
 /// takes them (row by row): each its block's traced colour (`colours[i]` for columns
-/// `i·spacing` on), converted at its own place on the display (`origin` plus its picture
-/// column and row). The block is stepped at its edges, not found by a division a pixel (the
+/// `base + i·spacing` on), converted at its own place on the display (`origin` plus its
+/// picture column and row). The block is stepped at its edges, not found by a division a pixel (the
 /// Cortex-M0 has no divider), in a loop of its own rather than a chain of adapters.
 struct BandPixels<'a, C> {
     colours: &'a [Rgb],
@@ -189,14 +221,14 @@ struct BandPixels<'a, C> {
 
 impl<'a, C> BandPixels<'a, C> {
     fn new(
-        colours: &'a [Rgb],
+        (colours, base): (&'a [Rgb], u32),
         spacing: u32,
         (cols, rows): (Range<u32>, Range<u32>),
         origin: Point,
     ) -> Self {
         let spacing = spacing.max(1);
-        let block = cols.start / spacing;
-        let first = (block as usize, (block + 1) * spacing);
+        let block = cols.start.saturating_sub(base) / spacing;
+        let first = (block as usize, base + (block + 1) * spacing);
         BandPixels {
             colours,
             spacing,

@@ -44,7 +44,7 @@ pub fn render_row<const N: usize, const L: usize>(
     out: &mut [Rgb],
 ) -> Result<(), Error> {
     let row = check_row(camera, y, out)?;
-    render_every(scene, camera, row, 0..camera.cols(), 0, out);
+    render_every(scene, camera, row, &[(0..camera.cols(), 0)], out);
     Ok(())
 }
 
@@ -96,47 +96,55 @@ pub(crate) fn render_columns<const N: usize, const L: usize>(
     cols: Range<u16>,
     out: &mut [Rgb],
 ) {
-    render_every(scene, camera, row, cols, 0, out);
+    render_every(scene, camera, row, &[(cols, 0)], out);
 }
 
-/// [`render_columns`] for every `2^shift`th column of `cols` from its first (`out[i]` is
-/// column `cols.start + i·2^shift`): the same walk along the row, its column step taken
-/// `2^shift` at a time, exactly, so the pixels are bit for bit those of the whole row. `shift`
-/// at most [`MAX_STRIDE_SHIFT`]; a larger one is taken as that.
+/// [`render_columns`] for walks along the row, each every `2^shift`th column of its `cols`
+/// from its first, their pixels one after another in `out` (`out[i]` is column
+/// `cols.start + i·2^shift` of the first walk, and so on): the same walk along the row, its
+/// column step taken `2^shift` at a time, exactly, so the pixels are bit for bit those of the
+/// whole row. The row is set up once for all its walks. `shift` at most
+/// [`MAX_STRIDE_SHIFT`]; a larger one is taken as that.
 pub(crate) fn render_every<const N: usize, const L: usize>(
     scene: &Scene<N, L>,
     camera: &Camera,
     row: u16,
-    cols: Range<u16>,
-    shift: u32,
+    walks: &[(Range<u16>, u32)],
     out: &mut [Rgb],
 ) {
-    // A walk of one column never steps: it is taken as that column alone, with a stride of
-    // 1, which keeps the step a column's however wide the stride asked.
-    let shift = shift.min(MAX_STRIDE_SHIFT);
-    let (cols, shift) = match cols.len() > 1 << shift {
-        true => (cols, shift),
-        false => (cols.start..cols.end.min(cols.start.saturating_add(1)), 0),
-    };
     // Where nothing can be hit the sky needs no rays: a plain one is its colour, a gradient
     // reads one component of each ray's direction.
     let sky = scene.background().plain_colour();
-    let (start, stride) = (cols.start, 1 << shift);
     let at = (scene, camera, row);
-    cast_row(
-        scene,
-        camera,
-        row,
-        (cols, shift),
-        true,
-        true,
-        out,
-        |out, first, end, run, shadowers| {
-            let place = (start + (first << shift), stride);
-            paint_run(at, place, out, first..end, run, shadowers, sky);
-        },
-        |out, col, ray, hit, shadowers| paint_pixel(scene, out, col, ray, hit, shadowers),
-    );
+    let mut runs = Runs::new(scene, camera, row);
+    let mut offset = 0;
+    for (cols, shift) in walks {
+        // A walk of one column never steps: it is taken as that column alone, with a stride
+        // of 1, which keeps the step a column's however wide the stride asked.
+        let shift = (*shift).min(MAX_STRIDE_SHIFT);
+        let (cols, shift) = match cols.len() > 1 << shift {
+            true => (cols.clone(), shift),
+            false => (cols.start..cols.end.min(cols.start.saturating_add(1)), 0),
+        };
+        let Some(walk_out) = out.get_mut(offset..) else {
+            return;
+        };
+        offset += (cols.len() + (1 << shift) - 1) >> shift;
+        let (start, stride) = (cols.start, 1 << shift);
+        cast_row(
+            scene,
+            camera,
+            &mut runs,
+            (cols, shift),
+            (true, true),
+            walk_out,
+            |out, first, end, run, shadowers| {
+                let place = (start + (first << shift), stride);
+                paint_run(at, place, out, first..end, run, shadowers, sky);
+            },
+            |out, col, ray, hit, shadowers| paint_pixel(scene, out, col, ray, hit, shadowers),
+        );
+    }
 }
 
 /// The largest stride of a walk along a row, as a power of two: `2^7` column steps, each
@@ -177,10 +185,9 @@ pub fn shoot_row<const N: usize, const L: usize>(
     cast_row(
         scene,
         camera,
-        row,
+        &mut Runs::new(scene, camera, row),
         (0..camera.cols(), 0),
-        false,
-        false,
+        (false, false),
         &mut each,
         |_, _, _, _, _| {}, // not made: `skip_empty` and `matte` are false here
         |each, col, ray, hit, _| each(col.into(), ray, hit),
@@ -214,10 +221,9 @@ pub fn shoot_row_skipping<const N: usize, const L: usize>(
     cast_row(
         scene,
         camera,
-        row,
+        &mut Runs::new(scene, camera, row),
         (0..camera.cols(), 0),
-        true,
-        false,
+        (true, false),
         &mut (empty, each),
         |(empty, _), first, end, run, _| match run {
             Run::Empty => empty(first.into()..end.into()),
@@ -259,16 +265,14 @@ pub(crate) enum Run<'a> {
 fn cast_row<T: ?Sized, const N: usize, const L: usize>(
     scene: &Scene<N, L>,
     camera: &Camera,
-    row: u16,
+    runs: &mut Runs<'_, N, L>,
     (cols, shift): (Range<u16>, u32),
-    skip_empty: bool,
-    matte: bool,
+    (skip_empty, matte): (bool, bool),
     target: &mut T,
     mut whole: impl FnMut(&mut T, u16, u16, Run<'_>, &[u32; L]),
     mut each: impl FnMut(&mut T, u16, &Ray, Option<SceneHit>, &[u32; L]),
 ) {
     let start = cols.start;
-    let mut runs = Runs::new(scene, camera, row);
     runs.limit(cols);
     let shadowers = *runs.shadowers();
     // The walk's step, `2^shift` columns: the row's, for every run.

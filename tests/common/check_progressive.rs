@@ -15,8 +15,8 @@ use super::{Recorder, Source, corner};
 
 /// [ASSERT: progressive passes end on the frame] For a coarsest spacing drawn from `src`:
 /// every pixel [`render_pass_row`] gives is `frame`'s pixel at its column, in the order
-/// `Pass::columns` names; painting each one's block, after the pass of spacing `s` pixel
-/// `(x, y)` shows `frame`'s pixel at `(x − x mod s, y − y mod s)`; every pixel is traced
+/// `Pass::columns` names; painting each one's block, after a pass of blocks `w × h` pixel
+/// `(x, y)` shows `frame`'s pixel at `(x − x mod w, y − y mod h)`; every pixel is traced
 /// exactly once over the passes; and the same passes drawn into a [`Framebuffer`], or through
 /// a [`Viewport`] onto a dithered display, leave it as the frame and [`Viewport::render`] do.
 pub fn check_progressive<const N: usize>(
@@ -37,24 +37,20 @@ pub fn check_progressive<const N: usize>(
         "the passes end at spacing 1"
     );
     for &pass in &passes {
-        let s = usize::from(pass.spacing());
+        let block = pass.block();
+        let (bw, bh) = (block.width as usize, block.height as usize);
         for y in 0..h {
             let n = render_pass_row(scene, camera, pass, y as u32, &mut line).expect("a row");
-            let Some((first, step)) = pass.columns(y as u32) else {
-                assert_eq!(n, 0, "pass {pass:?}, row {y}: a row it does not trace");
-                continue;
-            };
-            let (first, step) = (first as usize, step as usize);
-            assert_eq!(
-                n,
-                (first..w).step_by(step).count(),
-                "pass {pass:?}, row {y}"
-            );
-            for (i, x) in (first..w).step_by(step).enumerate() {
+            let columns: Vec<usize> = pass
+                .columns(y as u32)
+                .flat_map(|(first, step)| (first as usize..w).step_by(step as usize))
+                .collect();
+            assert_eq!(n, columns.len(), "pass {pass:?}, row {y}");
+            for (i, &x) in columns.iter().enumerate() {
                 assert_eq!(line[i], frame[y][x], "pass {pass:?}: pixel ({x}, {y})");
                 traced[y][x] += 1;
-                for row in shown.iter_mut().skip(y).take(s) {
-                    for pixel in row.iter_mut().skip(x).take(s) {
+                for row in shown.iter_mut().skip(y).take(bh) {
+                    for pixel in row.iter_mut().skip(x).take(bw) {
                         *pixel = Some(line[i]);
                     }
                 }
@@ -62,7 +58,7 @@ pub fn check_progressive<const N: usize>(
         }
         for (y, row) in shown.iter().enumerate() {
             for (x, pixel) in row.iter().enumerate() {
-                let corner = frame[y - y % s][x - x % s];
+                let corner = frame[y - y % bh][x - x % bw];
                 assert_eq!(
                     *pixel,
                     Some(corner),

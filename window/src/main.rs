@@ -13,8 +13,9 @@
 //!
 //! Each change of the view is drawn in progressive passes ([`Pass::sequence`]): first the
 //! whole picture in 8 × 8 blocks, one pixel traced in 64, so that the view follows the keys
-//! while one is held; then, once no key is held, the finer passes (4, 2 and 1) a band of rows
-//! at a time with [`Viewport::render_pass_rows`], the keys read between frames, so that a key
+//! while one is held; then, once no key is held, the finer passes (the grid of 4, the even
+//! rows, the odd rows) a band of rows at a time with [`Viewport::render_pass_rows`], the keys
+//! read between frames, so that a key
 //! pressed before the picture is complete abandons it for the new view's blocks. The time to
 //! the first picture, and once refined the time all its passes took, are written under the
 //! picture and printed to the terminal with the view.
