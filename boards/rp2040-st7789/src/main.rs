@@ -24,7 +24,8 @@
 //! progressive render (`Pass`): a coarse pass of 8 × 8 blocks fills the display quickly, and
 //! three finer ones sharpen it until it matches a full render of that view. The blocks go to
 //! the display through the same driver: in the finer passes a row of blocks that tile their
-//! band (every other row a pass traces) is one fill of the whole band, one address window;
+//! band (the odd rows, half the even ones, every other row of the grid of 4) is one fill of
+//! the whole band, one address window;
 //! every other block, the first pass's included, is a fill of its own. None of it fills a
 //! DMA buffer, so the CPU writes it. Core 1, if started, sleeps once its share of the first
 //! frame is done.
