@@ -9,14 +9,17 @@
 //!
 //! Columns: pixels whose object agrees; pixels within ±2 per channel; of the pixels whose
 //! object agrees, those within ±4; the largest channel error where the object agrees (and
-//! anywhere); PSNR; and the largest |Δt| (absolute, and relative to t) where both renderers
-//! hit the same object. The difference image shows the classic scene at 160 × 128, black
-//! where the renderers agree exactly and brighter where they differ (|Δ| × 32 per channel).
+//! anywhere); the pixels stable in the reference (their colour moves by at most 4 in every
+//! channel when their ray's direction moves by 2⁻¹⁶) and the largest channel error over them;
+//! PSNR; and the largest |Δt| (absolute, and relative to t) where both renderers hit the same
+//! object. Below each row the plain output lists the stable pixels off by more than 4. The
+//! difference image shows the classic scene at 160 × 128, black where the renderers agree
+//! exactly and brighter where they differ (|Δ| × 32 per channel).
 
 #[path = "../tests/common/accuracy.rs"]
 mod accuracy;
 
-use accuracy::Accuracy;
+use accuracy::{Accuracy, STABLE_WITHIN, channel_errors};
 use fixray::{Camera, Scene, demo};
 use fixray_reference::{DCamera, DScene, classic_camera, demo_camera};
 
@@ -25,12 +28,23 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     if markdown() {
         println!(
             "| scene | size | object agrees | within ±2 | agreeing within ±4 | max channel error \
-             | PSNR | max \\|Δt\\| (relative) |\n|---|---|---|---|---|---|---|---|"
+             | stable pixels | max error, stable | PSNR | max \\|Δt\\| (relative) |\n\
+             |---|---|---|---|---|---|---|---|---|---|"
         );
     } else {
         println!(
-            "{:<20} {:>8} {:>8} {:>7} {:>8} {:>9} {:>8} {:>9} {:>9}",
-            "scene", "size", "object%", "±2 %", "±4 ag.%", "max err", "PSNR dB", "max |Δt|", "Δt/t"
+            "{:<20} {:>8} {:>8} {:>7} {:>8} {:>9} {:>8} {:>7} {:>8} {:>9} {:>9}",
+            "scene",
+            "size",
+            "object%",
+            "±2 %",
+            "±4 ag.%",
+            "max err",
+            "stable%",
+            "st.err",
+            "PSNR dB",
+            "max |Δt|",
+            "Δt/t"
         );
     }
     let demo_scene = demo::scene();
@@ -59,29 +73,31 @@ fn row(
     let dscene = DScene::from_scene(scene).ok_or("the scene has no f64 twin")?;
     let (cols, rows) = (camera.width(), camera.height());
     let mut image = Vec::with_capacity(cols as usize * rows as usize * 3);
-    let a = Accuracy::measure_each(scene, camera, &dscene, dcamera, |_, _, seen, reference| {
-        for (s, r) in [
-            (seen.r, reference.r),
-            (seen.g, reference.g),
-            (seen.b, reference.b),
-        ] {
-            image.push(s.abs_diff(r).saturating_mul(32));
+    let mut stable_misses = Vec::new();
+    let a = Accuracy::measure_each(scene, camera, &dscene, dcamera, |p| {
+        image.extend(channel_errors(p.seen, p.reference).map(|d| d.saturating_mul(32)));
+        if p.stable && p.error() > STABLE_WITHIN {
+            stable_misses.push(*p);
         }
     });
     if markdown() {
         println!(
-            "| {name} | {cols} × {rows} | {:.3} % | {:.3} % | {:.3} % | {} | {:.1} dB | {} ({}) |",
+            "| {name} | {cols} × {rows} | {:.3} % | {:.3} % | {:.3} % | {} | {:.3} % | {} \
+             | {:.1} dB | {} ({}) |",
             a.same_object_percent(),
             a.within_2_percent(),
             a.same_within_4_percent(),
             a.max_channel_error,
+            a.stable_percent(),
+            a.max_stable_error,
             a.psnr_db(),
             two_digits(a.max_dt),
             scientific(a.max_dt_relative)
         );
     } else {
         println!(
-            "{:<20} {:>8} {:>8.3} {:>7.3} {:>8.3} {:>4} ({:>3}) {:>8.1} {:>9.4} {:>9.2e}",
+            "{:<20} {:>8} {:>8.3} {:>7.3} {:>8.3} {:>4} ({:>3}) {:>8.3} {:>7} {:>8.1} {:>9.4} \
+             {:>9.2e}",
             name,
             format!("{cols}x{rows}"),
             a.same_object_percent(),
@@ -89,10 +105,30 @@ fn row(
             a.same_within_4_percent(),
             a.max_channel_error,
             a.max_channel_error_any,
+            a.stable_percent(),
+            a.max_stable_error,
             a.psnr_db(),
             a.max_dt,
             a.max_dt_relative
         );
+        for p in &stable_misses {
+            let (s, r) = (p.seen, p.reference);
+            println!(
+                "  stable pixel ({}, {}) off by {}: object {:?} (reference {:?}), \
+                 ({}, {}, {}) against ({}, {}, {})",
+                p.x,
+                p.y,
+                p.error(),
+                p.object,
+                p.reference_object,
+                s.r,
+                s.g,
+                s.b,
+                r.r,
+                r.g,
+                r.b
+            );
+        }
     }
     if let Some(path) = diff {
         let mut ppm = format!("P6\n{cols} {rows}\n255\n").into_bytes();

@@ -5,7 +5,13 @@
 #![allow(dead_code)] // each user of this module reads a different part of it
 
 use fixray::{Camera, Rgb, Scene};
-use fixray_reference::{DCamera, DScene};
+use fixray_reference::{DCamera, DRay, DScene, DVec3};
+
+/// How far a pixel's reference colour may move, in each channel, for the pixel to be stable.
+pub const STABLE_WITHIN: u8 = 4;
+
+/// One Q16.16 step, 2⁻¹⁶: the grid fixray rounds each component of a ray's unit direction to.
+const STEP: f64 = 1.0 / 65_536.0;
 
 /// How closely a fixed-point render matches the f64 reference, over every pixel of a frame.
 ///
@@ -33,6 +39,10 @@ pub struct Accuracy {
     pub max_dt: f64,
     /// The largest |t_fixed − t_f64| / t_f64 where both hit the same object.
     pub max_dt_relative: f64,
+    /// Pixels that are stable in the reference (see [`stable`]).
+    pub stable: u32,
+    /// The largest channel difference over the stable pixels, object mismatches included.
+    pub max_stable_error: u8,
 }
 
 impl Accuracy {
@@ -47,17 +57,17 @@ impl Accuracy {
         dscene: &DScene<N, L>,
         dcamera: &DCamera,
     ) -> Self {
-        Self::measure_each(scene, camera, dscene, dcamera, |_, _, _, _| {})
+        Self::measure_each(scene, camera, dscene, dcamera, |_| {})
     }
 
-    /// [`Accuracy::measure`], also handing each pixel's position and both colours (fixed,
-    /// reference) to `each`: for a difference image.
+    /// [`Accuracy::measure`], also handing each [`Pixel`] compared to `each`, in rows from the
+    /// top: for a difference image, or to find where the errors are.
     pub fn measure_each<const N: usize, const L: usize>(
         scene: &Scene<N, L>,
         camera: &Camera,
         dscene: &DScene<N, L>,
         dcamera: &DCamera,
-        mut each: impl FnMut(u32, u32, Rgb, Rgb),
+        mut each: impl FnMut(&Pixel),
     ) -> Self {
         let mut acc = Accuracy::default();
         for row in 0..camera.height() {
@@ -65,10 +75,20 @@ impl Accuracy {
                 let ray = camera.ray(col, row);
                 let hit = scene.shoot(&ray);
                 let seen = scene.shade(&ray, hit.as_ref());
-                let (dhit, dseen) = dscene.trace(&dcamera.ray(col, row));
-                let same = hit.map(|h| h.object()) == dhit.map(|h| h.object);
-                acc.add(seen, dseen, same);
-                each(row, col, seen, dseen);
+                let dray = dcamera.ray(col, row);
+                let (dhit, dseen) = dscene.trace(&dray);
+                let pixel = Pixel {
+                    x: col,
+                    y: row,
+                    seen,
+                    reference: dseen,
+                    object: hit.map(|h| h.object()),
+                    reference_object: dhit.map(|h| h.object),
+                    stable: stable(dscene, &dray, dseen),
+                };
+                let same = pixel.object == pixel.reference_object;
+                acc.add(&pixel);
+                each(&pixel);
                 if let (Some(h), Some(d), true) = (hit, dhit, same) {
                     let dt = (h.hit().t().to_num::<f64>() - d.t).abs();
                     acc.max_dt = acc.max_dt.max(dt);
@@ -81,13 +101,10 @@ impl Accuracy {
         acc
     }
 
-    fn add(&mut self, seen: Rgb, reference: Rgb, same_object: bool) {
-        let diffs = [
-            seen.r.abs_diff(reference.r),
-            seen.g.abs_diff(reference.g),
-            seen.b.abs_diff(reference.b),
-        ];
-        let worst = diffs.iter().copied().max().unwrap_or(0);
+    fn add(&mut self, pixel: &Pixel) {
+        let same_object = pixel.object == pixel.reference_object;
+        let diffs = channel_errors(pixel.seen, pixel.reference);
+        let worst = pixel.error();
         self.pixels += 1;
         self.same_object += same_object as u32;
         self.within_2 += (worst <= 2) as u32;
@@ -97,6 +114,10 @@ impl Accuracy {
             self.max_channel_error = self.max_channel_error.max(worst);
         }
         self.max_channel_error_any = self.max_channel_error_any.max(worst);
+        if pixel.stable {
+            self.stable += 1;
+            self.max_stable_error = self.max_stable_error.max(worst);
+        }
         self.squared_error += diffs.iter().map(|&d| (d as f64) * (d as f64)).sum::<f64>();
     }
 
@@ -118,6 +139,12 @@ impl Accuracy {
         percent(self.same_within_4, self.same_object)
     }
 
+    /// Share of pixels that are stable in the reference, in percent.
+    #[must_use]
+    pub fn stable_percent(&self) -> f64 {
+        percent(self.stable, self.pixels)
+    }
+
     /// Share of pixels within ±4 per channel, in percent.
     #[must_use]
     pub fn within_4_percent(&self) -> f64 {
@@ -134,6 +161,87 @@ impl Accuracy {
             10.0 * libm::log10(255.0 * 255.0 / mse)
         }
     }
+}
+
+/// One pixel as both renderers saw it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Pixel {
+    /// The column, from the left.
+    pub x: u32,
+    /// The row, from the top.
+    pub y: u32,
+    /// fixray's colour.
+    pub seen: Rgb,
+    /// The reference's colour.
+    pub reference: Rgb,
+    /// The object fixray's ray hit first (its index in the scene), if any.
+    pub object: Option<usize>,
+    /// The object the reference's ray hit first, if any.
+    pub reference_object: Option<usize>,
+    /// Whether the pixel is stable in the reference (see [`stable`]).
+    pub stable: bool,
+}
+
+impl Pixel {
+    /// The largest of the three channels' differences.
+    #[must_use]
+    pub fn error(&self) -> u8 {
+        channel_errors(self.seen, self.reference)
+            .into_iter()
+            .max()
+            .unwrap_or(0)
+    }
+}
+
+/// Whether the reference's colour of the pixel whose ray is `ray` (`colour`) is stable: it
+/// moves by at most [`STABLE_WITHIN`] in every channel when the ray's direction moves by each
+/// of the 14 [`MOVES`], 2⁻¹⁶ in one component or in all three.
+///
+/// The direction is what moves, not the pixel centre on the screen, because the direction is
+/// what fixray rounds: its camera's ray carries its unit direction `u_r` in Q16.16, each
+/// component within 2⁻¹⁷ of exact, and spheres, highlights and every mirrored or refracted
+/// ray follow that rounded `u_r` (planes are met along the unrounded direction towards the
+/// pixel, so for them this asks more than fixray's rounding needs). A move of 2⁻¹⁶ a
+/// component is twice that rounding. The moved direction is normalised again, so a move
+/// along `u_r` itself turns it less.
+fn stable<const N: usize, const L: usize>(dscene: &DScene<N, L>, ray: &DRay, colour: Rgb) -> bool {
+    MOVES.iter().all(|&(x, y, z)| {
+        let step = DVec3::new(x, y, z) * STEP;
+        // A unit vector moved by at most 2⁻¹⁶·√3 keeps a direction.
+        DRay::new(ray.origin(), ray.dir() + step).is_some_and(|moved| {
+            let seen = dscene.trace(&moved).1;
+            channel_errors(seen, colour)
+                .iter()
+                .all(|&d| d <= STABLE_WITHIN)
+        })
+    })
+}
+
+/// The moves of a direction that [`stable`] tries, in steps of 2⁻¹⁶: each axis either way,
+/// and the eight corners, where fixray's rounding of all three components can take it at
+/// once. (All 26 neighbours on the grid of steps find the same stable pixels, at every size
+/// `examples/accuracy.rs` measures, at twice the cost.)
+const MOVES: [(f64, f64, f64); 14] = [
+    (1.0, 0.0, 0.0),
+    (-1.0, 0.0, 0.0),
+    (0.0, 1.0, 0.0),
+    (0.0, -1.0, 0.0),
+    (0.0, 0.0, 1.0),
+    (0.0, 0.0, -1.0),
+    (1.0, 1.0, 1.0),
+    (1.0, 1.0, -1.0),
+    (1.0, -1.0, 1.0),
+    (1.0, -1.0, -1.0),
+    (-1.0, 1.0, 1.0),
+    (-1.0, 1.0, -1.0),
+    (-1.0, -1.0, 1.0),
+    (-1.0, -1.0, -1.0),
+];
+
+/// The three channels' differences between two colours.
+#[must_use]
+pub fn channel_errors(a: Rgb, b: Rgb) -> [u8; 3] {
+    [a.r.abs_diff(b.r), a.g.abs_diff(b.g), a.b.abs_diff(b.b)]
 }
 
 fn percent(part: u32, whole: u32) -> f64 {
