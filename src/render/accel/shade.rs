@@ -14,7 +14,7 @@ use crate::geometry::ray::Ray;
 use crate::numbers::fx::{self, Fx};
 use crate::numbers::vec3::Vec3;
 use crate::render::highlight::highlight_below;
-use crate::render::trace::{Surface, scaled_channel};
+use crate::render::trace::{Surface, highlight_normal, scaled_channel};
 use crate::scene::hit::SceneHit;
 use crate::scene::light::Light;
 use crate::scene::linear::{Linear, powi, rgb_of};
@@ -78,13 +78,14 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     fn local_among(&self, object: &Object, at: &Surface, view: Vec3, sets: &[u32; L]) -> Linear {
         let material = &object.material;
         let (mut diffuse, mut specular) = (Fx::ZERO, Fx::ZERO);
+        let normal = highlight_normal(material, at.normal);
         for (i, light) in self.lights().iter().enumerate() {
             let Some((l, cos)) = self.reaches_among(i, light, at, self.shadow_set(i, sets)) else {
                 continue;
             };
             diffuse = diffuse.saturating_add(fx::mul_unit(light.intensity, cos));
             if material.specular > Fx::ZERO {
-                let term = highlight_if_lit(material, light, at.normal, l, view);
+                let term = highlight_if_lit(material, light, normal, l, view);
                 specular = specular.saturating_add(term);
             }
         }
