@@ -123,9 +123,9 @@ pub use geometry::{Hit, Plane, Ray, Shape, Sphere};
 pub use hash::FrameHash;
 pub use numbers::{FAR, Fx, LIMIT, Vec3};
 pub use render::{
-    Camera, Damage, LookAt, MAX_PIXELS, MAX_RECTANGLES, MAX_SPACING, Orbit, Pass, Passes, Pinhole,
-    RowRays, render, render_changes, render_pass, render_pass_row, render_row, render_row_span,
-    render_row_supersampled, shoot_row,
+    Camera, Columns, Damage, LookAt, MAX_PIXELS, MAX_RECTANGLES, MAX_SPACING, Orbit, Pass, Passes,
+    Pinhole, RowRays, render, render_changes, render_pass, render_pass_row, render_row,
+    render_row_span, render_row_supersampled, shoot_row,
 };
 pub use scene::{Background, Checker, Light, Material, Object, Refraction, Rgb, Scene, SceneHit};
 

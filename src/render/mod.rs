@@ -19,7 +19,7 @@ pub(crate) mod trace;
 pub use accel::row_rays::RowRays;
 pub use camera::{Camera, LookAt, MAX_PIXELS, Orbit, Pinhole};
 pub use changes::{Damage, MAX_RECTANGLES, render_changes, render_row_span};
-pub use progressive::{MAX_SPACING, Pass, Passes, render_pass, render_pass_row};
+pub use progressive::{Columns, MAX_SPACING, Pass, Passes, render_pass, render_pass_row};
 #[cfg(feature = "internals")]
 pub use rows::shoot_row_skipping;
 pub use rows::{render, render_row, render_row_supersampled, shoot_row};
