@@ -183,10 +183,14 @@ impl Plane {
         self.hit_from(ray, &self.numerator(ray.origin))
     }
 
-    /// The `t` of [`Plane::intersect`] alone (the whole hit is made: its point comes before
-    /// its distance).
+    /// The `t` of [`Plane::intersect`] alone, a shadow ray's question: the same steps, the
+    /// hit point made only where the plane's bounds need it, the normal not at all.
     pub(crate) fn hit_distance(&self, ray: &Ray) -> Option<Fx> {
-        Some(self.intersect(ray)?.t)
+        let scale = self.reach(ray, &self.numerator(ray.origin))?;
+        if self.bounds.is_some() {
+            self.bounded_at(ray.origin.plus(offset(scale, ray.w)))?;
+        }
+        Some(distance(scale, ray.w, ray.dir))
     }
 
     /// `−n·(p_r − p0)`, the numerator of Eq. 4.2, exactly in Q32.32: it depends on the
@@ -205,17 +209,20 @@ impl Plane {
 
     /// [`Plane::intersect`] given `num`, which must be `self.numerator(ray.origin)`.
     pub(crate) fn hit_from(&self, ray: &Ray, num: &Numerator) -> Option<Hit> {
-        let square = ray.w.length_squared_wide();
-        let scale = self.scale_along(num, self.normal.dot_wide_exact(ray.w))?;
-        if !within_far(scale, square) {
-            return None;
-        }
+        let scale = self.reach(ray, num)?;
         let point = self.bounded_at(ray.origin.plus(offset(scale, ray.w)))?;
         Some(Hit {
             t: distance(scale, ray.w, ray.dir),
             point,
             normal: self.facing(num),
         })
+    }
+
+    /// The scale `s` of the hit `p_r + s·w` of a ray from the origin of `num`, if the plane
+    /// lies ahead within [`FAR`] (its bounds are the caller's to check).
+    fn reach(&self, ray: &Ray, num: &Numerator) -> Option<Scale> {
+        let scale = self.scale_along(num, self.normal.dot_wide_exact(ray.w))?;
+        within_far(scale, ray.w.length_squared_wide()).then_some(scale)
     }
 
     /// `s = −n·(p_r − p0) / (n·w)` for a direction `w` with `n·w = den` (exact, in Q32.32),
