@@ -278,16 +278,12 @@ pub fn render_pass_row<const N: usize, const L: usize>(
         return Ok(0); // most rows of a coarse pass: asked, and let go at once
     }
     let cols = u32::from(camera.cols());
+    let count = columns.count_below(cols) as usize;
     // Firsts below 128 and steps powers of two up to 128: all fit. A run that starts past
     // the row is empty.
-    let (mut walks, mut n, mut count) = ([(0..0, 0), (0..0, 0)], 0, 0);
+    let (mut walks, n) = ([(0..0, 0), (0..0, 0)], columns.len());
     for (walk, (first, step)) in walks.iter_mut().zip(columns) {
-        let (first, shift) = (first.min(cols), step.trailing_zeros());
-        *walk = (first as u16..cols as u16, shift);
-        (n, count) = (
-            n + 1,
-            count + ((cols - first + (1 << shift) - 1) >> shift) as usize,
-        );
+        *walk = (first.min(cols) as u16..cols as u16, step.trailing_zeros());
     }
     if count == 0 {
         return Ok(0);
