@@ -1,39 +1,47 @@
-//! Which highlights are 0 before their half vector is formed.
+//! Which highlights are 0 before their cosine is formed.
 //!
 //! A highlight is `Σ I·(n·h)^shininess` over the lights, `h` the unit vector halfway between a
 //! light's direction and the view's. Its power is 0 below the material's least lit cosine
 //! (`least_lit_base`, exact), and for a shininess of 50 and more that is most of a surface:
-//! there neither the power nor `h`, a reciprocal root and four products, need be formed. The
-//! test here says so only where the cosine `Scene::local` would form is surely below it, so
-//! the highlights are bit for bit those formed in full.
+//! there neither the power nor the cosine's reciprocal root need be formed. The test here
+//! says so only where the cosine the plain path forms is surely below it, so the highlights
+//! are bit for bit those formed in full.
 
-use crate::numbers::fx;
+use crate::numbers::fx::{self, Fx};
 use crate::numbers::vec3::Vec3;
 
-/// Whether the highlight's cosine `n·h`, for `h` the unit vector along `v` (a light's unit
-/// direction less the view's), must come out below
-/// `from` (raw Q16.16, the material's least lit cosine) as `Scene::local` forms it: then the
-/// highlight is 0 and `h` need not be formed. Exact where it says so, conservative elsewhere.
+/// The cosine `n·h` of a highlight, for `h` the unit vector along `v` (a light's unit
+/// direction less the view's), as [`highlight`](crate::render::trace::highlight) forms it
+/// ([`Vec3::cosine_to`]); or `None` where that cosine must come out below `from` (raw
+/// Q16.16, the material's least lit cosine), so that the highlight is 0 and the root need not
+/// be taken, or where `v` is zero. Exact where it says so, conservative elsewhere: the
+/// cosines it gives are bit for bit the plain path's, and those it rules out are below `from`.
+pub(crate) fn lit_cosine(normal: Vec3, v: Vec3, from: u16) -> Option<Fx> {
+    let (n, square) = (normal.dot_wide_exact(v), v.length_squared_wide());
+    if surely_below(n, square, from) {
+        return None;
+    }
+    Vec3::cosine_from(n, square)
+}
+
+/// Whether the cosine formed from `n = n·v` (exact, raw units) and `square = ‖v‖²` (Q32.32)
+/// must come out below `from`.
 ///
-/// `h`'s components lie within 0.6 of a unit (2⁻¹⁶) of `v`'s over `‖v‖`
-/// (`Vec3::normalize_with_square`), so for a normal of length at most 1 + 2⁻¹⁵ the dot product
-/// before its rounding lies within 1.04 units of `N/√S`, with `N = n·v` exact in raw units
-/// and `S = ‖v‖²` in Q32.32, and rounded within 1.54: below `from` wherever `N < (from − 2)·√S`. That
-/// is `N ≤ 0`, or `N² < (from − 2)²·S`, compared with `N` divided by 4 (rounded up) and `S` by
-/// 16 (down) so that both sides are 32 × 32-bit products below 2⁶².
-#[inline]
-pub(crate) fn highlight_below(normal: Vec3, v: Vec3, from: u16) -> bool {
-    let t = i32::from(from) - 2;
+/// It comes out within 0.541 of a unit of 2⁻¹⁶ of `N/√S` ([`Vec3::cosine_from`]), so below
+/// `from` wherever `N < (from − 1)·√S`. That is `N ≤ 0`, or `N² < (from − 1)²·S`, compared
+/// with `N` divided by 4 (rounded up) and `S` by 16 (down) so that both sides are 32 × 32-bit
+/// products below 2⁶².
+fn surely_below(n: i64, square: u64, from: u16) -> bool {
+    let t = i32::from(from) - 1;
     if t <= 0 {
         return false;
     }
-    let n = normal.dot_wide_exact(v);
     if n <= 0 {
         return true;
     }
     // A light's and a view's unit vectors keep `n` within 2³³ and `‖v‖²` within 2³⁴ (and a
     // little); anything larger is not ruled out.
-    let (quarter, sixteenth) = ((n + 3) >> 2, v.length_squared_wide() >> 4);
+    let (quarter, sixteenth) = ((n + 3) >> 2, square >> 4);
     if quarter > u32::MAX as i64 || sixteenth > u32::MAX as u64 {
         return false;
     }
@@ -44,7 +52,6 @@ pub(crate) fn highlight_below(normal: Vec3, v: Vec3, from: u16) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::numbers::fx::Fx;
     use crate::scene::linear::least_lit_base;
     use crate::xorshift::XorShift;
 
@@ -63,8 +70,9 @@ mod tests {
 
     /// The cosine as `Scene::local` forms it, clamped, in raw units: 0 where `v` is zero.
     fn cosine(normal: Vec3, v: Vec3) -> i32 {
-        v.try_normalize()
-            .map_or(0, |h| normal.dot(h).max(Fx::ZERO).min(Fx::ONE).to_bits())
+        normal
+            .cosine_to(v)
+            .map_or(0, |s| s.max(Fx::ZERO).min(Fx::ONE).to_bits())
     }
 
     #[test]
@@ -81,12 +89,12 @@ mod tests {
             let v = l - dir;
             let from = thresholds[round % thresholds.len()];
             let s = cosine(normal, v);
-            if highlight_below(normal, v, from) {
+            if lit_cosine(normal, v, from).is_none() {
                 assert!(s < i32::from(from), "{normal:?} {v:?}: {s} against {from}");
             }
             if s + 8 < i32::from(from) && v.length_squared_wide() > 1 << 28 {
                 well_below += 1;
-                caught += u32::from(highlight_below(normal, v, from));
+                caught += u32::from(lit_cosine(normal, v, from).is_none());
             }
         }
         // Tight as well as safe: every highlight 8 units and more below its threshold is
@@ -149,7 +157,7 @@ mod tests {
                 };
                 let v = l - dir;
                 let s = cosine(normal, v);
-                if highlight_below(normal, v, from) {
+                if lit_cosine(normal, v, from).is_none() {
                     assert!(s < i32::from(from), "{normal:?} {v:?}: {s} against {from}");
                 }
                 near += usize::from((s - i32::from(from)).abs() <= 2);

@@ -455,7 +455,8 @@ pub(crate) fn highlight_normal(material: &Material, normal: Vec3) -> Vec3 {
 
 /// The highlight `light` adds where it reaches a surface of `material` whose normal is
 /// `normal`, along the unit `l`, seen along `view`: its intensity times `(n·h)^shininess`, `h`
-/// the unit vector halfway between `l` and the view's reverse.
+/// the unit vector halfway between `l` and the view's reverse — `n·h` formed as `n·v/‖v‖` for
+/// `v = l − view` ([`Vec3::cosine_to`]), one rounding from the exact dot product.
 pub(crate) fn highlight(
     material: &Material,
     light: &Light,
@@ -464,10 +465,10 @@ pub(crate) fn highlight(
     view: Vec3,
 ) -> Fx {
     let v = l.minus(view); // two unit vectors: no saturation to check
-    let Some(half) = v.try_normalize() else {
+    let Some(s) = normal.cosine_to(v) else {
         return Fx::ZERO;
     };
-    let s = normal.dot_units(half).max(Fx::ZERO).min(Fx::ONE);
+    let s = s.max(Fx::ZERO).min(Fx::ONE);
     fx::mul_fits(light.intensity, powi(s, material.shininess))
 }
 

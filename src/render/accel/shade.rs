@@ -13,7 +13,7 @@ use crate::geometry::Shape;
 use crate::geometry::ray::Ray;
 use crate::numbers::fx::{self, Fx};
 use crate::numbers::vec3::Vec3;
-use crate::render::highlight::highlight_below;
+use crate::render::highlight::lit_cosine;
 use crate::render::trace::{Surface, highlight_normal, scaled_channel};
 use crate::scene::hit::SceneHit;
 use crate::scene::light::Light;
@@ -206,17 +206,14 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     }
 }
 
-/// [`highlight`], 0 without its half vector or its power where its cosine must come out below
-/// the material's least lit one ([`highlight_below`]) or does, where the power is 0.
+/// [`highlight`], 0 without its root or its power where its cosine must come out below the
+/// material's least lit one ([`lit_cosine`]) or does, where the power is 0.
 fn highlight_if_lit(material: &Material, light: &Light, normal: Vec3, l: Vec3, view: Vec3) -> Fx {
     let v = l.minus(view); // two unit vectors: no saturation to check
-    if highlight_below(normal, v, material.highlight_from) {
-        return Fx::ZERO;
-    }
-    let Some(half) = v.try_normalize() else {
+    let Some(s) = lit_cosine(normal, v, material.highlight_from) else {
         return Fx::ZERO;
     };
-    let s = normal.dot_units(half).max(Fx::ZERO).min(Fx::ONE);
+    let s = s.max(Fx::ZERO).min(Fx::ONE);
     if s.to_bits() < i32::from(material.highlight_from) {
         return Fx::ZERO;
     }
