@@ -8,6 +8,7 @@ use crate::geometry::plane::Plane;
 use crate::geometry::ray::Ray;
 use crate::geometry::shape::Shape;
 use crate::numbers::vec3::Vec3;
+use crate::render::accel::crowd::{Crowd, Names};
 use crate::render::accel::matte::MatteRun;
 use crate::render::accel::row_rays::RowRays;
 use crate::render::accel::runs::Runs;
@@ -112,11 +113,34 @@ pub(crate) fn render_every<const N: usize, const L: usize>(
     walks: &[(Range<u16>, u32)],
     out: &mut [Rgb],
 ) {
+    if N > 64 {
+        let mut crowd = Crowd::EMPTY;
+        let mut runs = Runs::crowded(scene, camera, row, &mut crowd);
+        return walk_every(scene, camera, row, walks, out, &mut runs);
+    }
+    walk_every(
+        scene,
+        camera,
+        row,
+        walks,
+        out,
+        &mut Runs::new(scene, camera, row),
+    );
+}
+
+/// [`render_every`] along the runs `runs` of display row `row`.
+fn walk_every<const N: usize, const L: usize, C: Names>(
+    scene: &Scene<N, L>,
+    camera: &Camera,
+    row: u16,
+    walks: &[(Range<u16>, u32)],
+    out: &mut [Rgb],
+    runs: &mut Runs<'_, N, L, C>,
+) {
     // Where nothing can be hit the sky needs no rays: a plain one is its colour, a gradient
     // reads one component of each ray's direction.
     let sky = scene.background().plain_colour();
     let at = (scene, camera, row);
-    let mut runs = Runs::new(scene, camera, row);
     let mut offset = 0;
     for (cols, shift) in walks {
         // A walk of one column never steps: it is taken as that column alone, with a stride
@@ -134,7 +158,7 @@ pub(crate) fn render_every<const N: usize, const L: usize>(
         cast_row(
             scene,
             camera,
-            &mut runs,
+            runs,
             (cols, shift),
             (true, true),
             walk_out,
@@ -262,10 +286,10 @@ pub(crate) enum Run<'a> {
 /// closures, not one: the pixels' is then called from the run loop alone, where the compiler
 /// can take its shading in line.
 #[allow(clippy::too_many_arguments)]
-fn cast_row<T: ?Sized, const N: usize, const L: usize>(
+fn cast_row<T: ?Sized, const N: usize, const L: usize, C: Names>(
     scene: &Scene<N, L>,
     camera: &Camera,
-    runs: &mut Runs<'_, N, L>,
+    runs: &mut Runs<'_, N, L, C>,
     (cols, shift): (Range<u16>, u32),
     (skip_empty, matte): (bool, bool),
     target: &mut T,
@@ -284,15 +308,14 @@ fn cast_row<T: ?Sized, const N: usize, const L: usize>(
             continue;
         }
         let col = start + (first << shift);
-        if here == 0 && skip_empty {
+        if runs.is_empty(here) && skip_empty {
             whole(target, first, end, Run::Empty, &shadowers);
             continue;
         }
         let eye = runs.eye();
         // A run that can meet one object only (the open ground, most often) asks it alone:
         // the nearest of one is that one, and the loop has no set of objects to walk.
-        let one = (here.is_power_of_two() && scene.objects().len() <= 64)
-            .then(|| here.trailing_zeros() as usize);
+        let one = runs.only(here);
         if let Some(index) = one
             && matte
             && let Some(plane) = matte_plane(scene, index)

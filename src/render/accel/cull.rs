@@ -10,6 +10,7 @@ use crate::numbers::bits;
 use crate::numbers::fx::{self, FAR, Fx};
 use crate::numbers::isqrt::isqrt;
 use crate::numbers::vec3::Vec3;
+use crate::render::accel::crowd::{ByIndex, Crowd, Names};
 use crate::scene::hit::SceneHit;
 use crate::scene::{Object, Scene};
 
@@ -62,7 +63,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     #[cfg(feature = "internals")]
     #[must_use]
     pub fn shoot_among(&self, ray: &Ray, among: u64) -> Option<SceneHit> {
-        self.nearest_among(ray, [among, 0], 0, |_, shape, _| shape.meet(ray))
+        self.nearest_among(ray, [among, 0], 0, ByIndex, |_, shape, _| shape.meet(ray))
     }
 
     /// [`Scene::shoot_among`] for a ray from `eye.origin()`, with what all such rays share
@@ -73,12 +74,18 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// need no test. A sphere whose near side lies beyond the nearest hit found so far takes
     /// one dot product ([`Sphere::hit_distance_within`]).
     #[inline]
-    pub(crate) fn shoot_from_eye(&self, ray: &Ray, among: u64, eye: &Eye<N>) -> Option<SceneHit> {
+    pub(crate) fn shoot_from_eye<C: Names>(
+        &self,
+        ray: &Ray,
+        among: u64,
+        eye: &Eye<N, C>,
+    ) -> Option<SceneHit> {
         let order = [among & !eye.planes, among & eye.planes];
         self.nearest_among(
             ray,
             order,
             eye.before_planes,
+            eye.names,
             |index, shape, best| match shape {
                 Shape::Plane(plane) => {
                     let hit = plane.hit_from(ray, eye.numerator(index))?;
@@ -94,11 +101,11 @@ impl<const N: usize, const L: usize> Scene<N, L> {
 
     /// [`Scene::shoot_from_eye`] for a set of one object, `index`: its hit, if any.
     #[inline]
-    pub(crate) fn shoot_one_from_eye(
+    pub(crate) fn shoot_one_from_eye<C: Names>(
         &self,
         ray: &Ray,
         index: usize,
-        eye: &Eye<N>,
+        eye: &Eye<N, C>,
     ) -> Option<SceneHit> {
         let hit = match self.objects().get(index)?.shape {
             Shape::Plane(plane) => plane.hit_from(ray, eye.numerator(index))?,
@@ -109,17 +116,19 @@ impl<const N: usize, const L: usize> Scene<N, L> {
 
     /// The nearest hit among the objects of `first`, then of `then` unless the nearest of
     /// `first` is one of `enough` (bit `i` for object `i`; objects past the 64th are always
-    /// tried, last), with `distance(index, shape, best)` giving each one's `t`, and its whole
+    /// tried, last; or with a row's `crowd`, bit `i` for the object it names, and its extras
+    /// tried last), with `distance(index, shape, best)` giving each one's `t`, and its whole
     /// hit where that came at no extra cost (a plane's point is found before its distance).
     /// `best` is the nearest `t` found so far (`Fx::MAX` before any): a shape none of whose
     /// hits can be as near may come back `None`. Ties go to the lower index, whatever the
     /// order (see [`Scene::shoot_among`]).
     #[inline]
-    fn nearest_among(
+    fn nearest_among<C: Names>(
         &self,
         ray: &Ray,
         [first, then]: [u64; 2],
         enough: u64,
+        names: C,
         distance: impl Fn(usize, &Shape, Fx) -> Option<(Fx, Option<Hit>)>,
     ) -> Option<SceneHit> {
         // Hits lie within FAR, so any hit is nearer than MAX.
@@ -131,12 +140,15 @@ impl<const N: usize, const L: usize> Scene<N, L> {
                 (best, *nearest, known) = (t, index, hit);
             }
         };
+        // A crowd's bits are all objects the row has: no mask of present ones applies.
+        let present = if C::CROWD { !0 } else { self.present() };
         // Only the set bits, lowest first: culled objects cost nothing.
-        let (mut rest, mut then) = (first & self.present(), then & self.present());
+        let (mut rest, mut then) = (first & present, then & present);
         loop {
             while rest != 0 {
-                let index = rest.trailing_zeros() as usize;
+                let bit = rest.trailing_zeros() as usize;
                 rest &= rest - 1;
+                let index = names.object(bit);
                 try_object(index, &self.objects()[index], &mut nearest);
             }
             if then == 0 || (nearest < 64 && bits::has(enough, nearest)) {
@@ -144,8 +156,16 @@ impl<const N: usize, const L: usize> Scene<N, L> {
             }
             (rest, then) = (then, 0);
         }
-        for (index, object) in self.objects().iter().enumerate().skip(64) {
-            try_object(index, object, &mut nearest);
+        if C::CROWD {
+            for &index in names.extras() {
+                if let Some(object) = self.objects().get(index as usize) {
+                    try_object(index as usize, object, &mut nearest);
+                }
+            }
+        } else {
+            for (index, object) in self.objects().iter().enumerate().skip(64) {
+                try_object(index, object, &mut nearest);
+            }
         }
         self.hit_of_nearest(ray, nearest, best, known)
     }
@@ -154,15 +174,17 @@ impl<const N: usize, const L: usize> Scene<N, L> {
 /// What every ray from one point (a camera's eye) shares, worked out once a frame: each
 /// plane's numerator of Eq. 4.2 ([`Plane`]'s `t = −n·(p_r − p0) / (n·u_r)` has `p_r` only in
 /// its numerator).
-pub(crate) struct Eye<const N: usize> {
+pub(crate) struct Eye<const N: usize, C: Names = ByIndex> {
     numerators: [Numerator; N],
-    /// The planes among the first 64 objects (bit `i` for object `i`).
+    /// The planes among the first 64 objects (bit `i` for object `i`), or among a crowd's.
     planes: u64,
     /// Of the spheres the rays will try, those every hit of which, as a ray from the eye
     /// finds it, is nearer than any plane's hit on that ray (bit `i` for object `i`; none in
     /// scenes of more than 64 objects): they lie wholly on the eye's side of every plane
     /// ([`before_plane`]).
     before_planes: u64,
+    /// What the bits stand for.
+    names: C,
 }
 
 impl<const N: usize> Eye<N> {
@@ -191,7 +213,52 @@ impl<const N: usize> Eye<N> {
             numerators,
             planes,
             before_planes,
+            names: ByIndex,
         }
+    }
+}
+
+impl<'a, const N: usize> Eye<N, &'a Crowd<N>> {
+    /// The shared terms of rays from `origin` into `scene`, for a row whose bits `crowd` gives
+    /// to objects, `planes` those of planes. Spheres before the planes are not sought: the
+    /// nearest hit tries every object of a ray's set.
+    pub(crate) fn crowded<const L: usize>(
+        scene: &Scene<N, L>,
+        origin: Vec3,
+        planes: u64,
+        crowd: &'a Crowd<N>,
+    ) -> Self {
+        let objects = scene.objects();
+        let numerators = core::array::from_fn(|index| match objects.get(index) {
+            Some(Object {
+                shape: Shape::Plane(plane),
+                ..
+            }) => plane.numerator(origin),
+            _ => Numerator::NONE,
+        });
+        Eye {
+            numerators,
+            planes,
+            before_planes: 0,
+            names: crowd,
+        }
+    }
+}
+
+impl<const N: usize, C: Names> Eye<N, C> {
+    /// The object bit `bit` of a row's sets stands for.
+    pub(crate) fn object(&self, bit: usize) -> usize {
+        self.names.object(bit)
+    }
+
+    /// Whether a ray's set is all it tries, in a scene of `count` objects.
+    pub(crate) fn alone(&self, count: usize) -> bool {
+        self.names.alone(count)
+    }
+
+    /// The objects every ray of the row tries besides its set.
+    pub(crate) fn extras(&self) -> &[u32] {
+        self.names.extras()
     }
 
     /// Plane `index`'s numerator of Eq. 4.2 for rays from the eye (0 for anything else).

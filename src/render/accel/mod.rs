@@ -2,6 +2,7 @@
 //!
 //! - `camera_rows`: what the row walk asks of the camera (a row's first direction and column
 //!   step, the plane of a row's rays, a sphere's span of columns);
+//! - `crowd`: a row's objects named by its 64 bits, in scenes that may hold more;
 //! - `row_rays`: a row's rays by exact column steps, their squared lengths carried along;
 //! - `runs`: a row cut into runs of columns that can meet the same objects (culling by the
 //!   row's plane, each sphere's column span, and planes every ray of a run points away from);
@@ -16,10 +17,13 @@
 //! - `shadow_cone`: each light's cone around each sphere, which a shadow ray outside it cannot
 //!   meet;
 //! - `shadowers`: for each light and object, the objects that can shadow it;
+//! - `shadow_sweep`: past 32 objects, each light's objects sorted by the directions their
+//!   shadows take, for a shadow ray to find those it may meet;
 //! - `shadow_caches`: the two kept in the scene, worked out again whenever an object or a
 //!   light changes (the scene knows no more of them than that).
 
 pub(crate) mod camera_rows;
+pub(crate) mod crowd;
 pub(crate) mod cull;
 pub(crate) mod matte;
 pub(crate) mod row_rays;
@@ -29,5 +33,6 @@ pub(crate) mod shadow_caches;
 pub(crate) mod shadow_columns;
 pub(crate) mod shadow_cone;
 pub(crate) mod shadow_rows;
+pub(crate) mod shadow_sweep;
 pub(crate) mod shadowers;
 pub(crate) mod sky;

@@ -4,6 +4,7 @@
 use crate::geometry::shape::Shape;
 use crate::numbers::bits;
 use crate::numbers::vec3::Vec3;
+use crate::render::accel::crowd::{ByIndex, Crowd, Names};
 use crate::render::accel::cull::{Eye, row_ball, row_offset};
 use crate::render::accel::shadow_rows::row_shadowers;
 use crate::render::camera::Camera;
@@ -17,7 +18,7 @@ use crate::scene::Scene;
 /// along it. Between the ends of spans the set of objects worth trying is constant: a run.
 /// Every test is conservative, so a ray tries every object it can hit and the hits are
 /// exactly [`Scene::shoot`]'s.
-pub(crate) struct Runs<'a, const N: usize, const L: usize> {
+pub(crate) struct Runs<'a, const N: usize, const L: usize, C: Names = ByIndex> {
     scene: &'a Scene<N, L>,
     /// The objects the row's plane can meet.
     among: u64,
@@ -27,7 +28,7 @@ pub(crate) struct Runs<'a, const N: usize, const L: usize> {
     spans: [(i16, i16); N],
     /// Planes, and what their hit tests share for rays from the eye.
     planes: u64,
-    eye: Eye<N>,
+    eye: Eye<N, C>,
     /// For each light, the objects that may shadow the row's hits on planes.
     shadowers: [u32; L],
     /// The unnormalised direction towards column 0, and one column's step.
@@ -105,6 +106,93 @@ impl<'a, const N: usize, const L: usize> Runs<'a, N, L> {
         }
     }
 
+    /// [`Runs::new`] for a scene whose capacity passes 64: the row's bits go to the objects it
+    /// can meet, in order, as `crowd` keeps them (`accel/crowd.rs`), and a sphere whose
+    /// columns all lie off the screen has none.
+    pub(crate) fn crowded(
+        scene: &'a Scene<N, L>,
+        camera: &Camera,
+        row: u16,
+        crowd: &'a mut Crowd<N>,
+    ) -> Runs<'a, N, L, &'a Crowd<N>> {
+        let start = camera.row_start(row);
+        let row_normal = camera.row_plane_normal_from(start);
+        let eye = camera.eye();
+        let cols = i32::from(camera.cols());
+        let (mut among, mut bounded, mut spans, mut planes) = (0u64, 0, [(0, 0); N], 0);
+        // The planes by object, for the shadow sets, which name objects.
+        let mut plane_objects = 0;
+        let mut bit = 0;
+        for (index, object) in scene.objects().iter().enumerate() {
+            let span = match object.shape {
+                Shape::Sphere(sphere) => {
+                    let (centre, radius) = match row_normal {
+                        Some(normal) => match row_offset(&sphere, eye, normal) {
+                            Some(height) => row_ball(&sphere, eye, normal, height),
+                            None => continue,
+                        },
+                        None => (sphere.centre(), sphere.radius()),
+                    };
+                    match camera.column_span(centre, radius) {
+                        Some((first, last)) if last < 0 || i32::from(first) >= cols => continue,
+                        span => span,
+                    }
+                }
+                Shape::Plane(_) => {
+                    if index < 64 {
+                        plane_objects |= bits::bit(index);
+                    }
+                    None
+                }
+            };
+            crowd.add(bit, index);
+            if bit < 64 {
+                among |= bits::bit(bit);
+                if let Shape::Plane(_) = object.shape {
+                    planes |= bits::bit(bit);
+                }
+                if let (Some(span), Some(slot)) = (span, spans.get_mut(bit)) {
+                    *slot = span;
+                    bounded |= bits::bit(bit);
+                }
+            }
+            bit += 1;
+        }
+        let shadowers = match row_normal {
+            Some(row_normal) => row_shadowers(scene, eye, row_normal, plane_objects),
+            None => [!0; L],
+        };
+        Runs {
+            scene,
+            among,
+            bounded,
+            spans,
+            planes,
+            shadowers,
+            eye: Eye::crowded(scene, eye, planes, crowd),
+            start,
+            step: camera.column_step(),
+            col: 0,
+            cols: camera.cols(),
+            width: camera.cols(),
+        }
+    }
+}
+
+impl<'a, const N: usize, const L: usize, C: Names> Runs<'a, N, L, C> {
+    /// The one object a run's set `here` can meet, if it is one alone: none where objects
+    /// past the 64th or a crowded row's extras are tried as well.
+    pub(crate) fn only(&self, here: u64) -> Option<usize> {
+        let alone =
+            here.is_power_of_two() && (N <= 64 || self.eye.alone(self.scene.objects().len()));
+        alone.then(|| self.eye.object(here.trailing_zeros() as usize))
+    }
+
+    /// Whether a run's set `here` meets nothing at all.
+    pub(crate) fn is_empty(&self, here: u64) -> bool {
+        here == 0 && self.eye.extras().is_empty()
+    }
+
     /// For each light, the objects that may shadow a hit of the row on a plane (see
     /// `shadow_rows`); a hit on a sphere may be shadowed by any of its own set.
     pub(crate) const fn shadowers(&self) -> &[u32; L] {
@@ -122,7 +210,7 @@ impl<'a, const N: usize, const L: usize> Runs<'a, N, L> {
     }
 
     /// What rays from the eye share, for [`Scene::shoot_from_eye`].
-    pub(crate) const fn eye(&self) -> &Eye<N> {
+    pub(crate) const fn eye(&self) -> &Eye<N, C> {
         &self.eye
     }
 
@@ -162,9 +250,15 @@ impl<'a, const N: usize, const L: usize> Runs<'a, N, L> {
             while planes != 0 {
                 let index = planes.trailing_zeros() as usize;
                 planes &= planes - 1;
-                if let Some(object) = self.scene.objects().get(index)
+                let object_index = self.eye.object(index);
+                if let Some(object) = self.scene.objects().get(object_index)
                     && let Shape::Plane(plane) = object.shape
-                    && misses_all(plane.normal(), self.eye.numerator(index).value, first, last)
+                    && misses_all(
+                        plane.normal(),
+                        self.eye.numerator(object_index).value,
+                        first,
+                        last,
+                    )
                 {
                     here &= !bits::bit(index);
                 }

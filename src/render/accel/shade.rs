@@ -13,6 +13,7 @@ use crate::geometry::Shape;
 use crate::geometry::ray::Ray;
 use crate::numbers::fx::{self, Fx};
 use crate::numbers::vec3::Vec3;
+use crate::render::accel::shadow_sweep;
 use crate::render::highlight::lit_cosine;
 use crate::render::trace::{Surface, highlight_normal, scaled_channel};
 use crate::scene::hit::SceneHit;
@@ -163,8 +164,11 @@ impl<const N: usize, const L: usize> Scene<N, L> {
                 }
                 false
             }
-            // In scenes of more than 32 objects every one is tried.
-            None => (0..objects.len()).any(may_block),
+            // In scenes of more than 32 objects, those the light's sweep leaves.
+            None => match self.shadow_caches().sweep(light, objects.len()) {
+                Some(sweep) if N > 32 => shadow_sweep::any(sweep, dir, may_block),
+                _ => (0..objects.len()).any(may_block),
+            },
         }
     }
 

@@ -7,17 +7,20 @@
 //! in it. Both are `const fn`, so a `static` scene's caches are built by the compiler.
 
 use crate::render::accel::shadow_cone::ShadowCone;
+use crate::render::accel::shadow_sweep;
 use crate::render::accel::shadowers::shadowers;
 use crate::scene::{Light, Object};
 
 /// Each light's [`ShadowCone`] around each object, and the objects that can shadow each
-/// object from each light ([`shadowers`]).
+/// object from each light ([`shadowers`]), or in a scene of more than 32 objects each light's
+/// shadow sweep (`shadow_sweep`).
 #[derive(Debug, Clone)]
 pub(crate) struct ShadowCaches<const N: usize, const L: usize> {
     /// `cones[light][object]`: what each light sees of each sphere.
     cones: [[ShadowCone; N]; L],
     /// `shadowers[light][object]`: the objects a shadow ray towards each light from a hit on
-    /// each object may meet (bit `i` for object `i`, below 32).
+    /// each object may meet (bit `i` for object `i`, below 32); past 32 objects, the light's
+    /// sweep.
     shadowers: [[u32; N]; L],
 }
 
@@ -62,8 +65,16 @@ impl<const N: usize, const L: usize> ShadowCaches<N, L> {
         self.refresh_shadowers(index, objects, lights);
     }
 
-    /// Works out again which objects can shadow each object from light `light`.
+    /// Works out again which objects can shadow each object from light `light`, or past 32
+    /// objects the light's sweep.
     const fn refresh_shadowers(&mut self, light: usize, objects: &[Object], lights: &[Light]) {
+        if objects.len() > 32 {
+            if objects.len() <= shadow_sweep::MOST {
+                let position = lights[light].position;
+                shadow_sweep::build(position, objects, &mut self.shadowers[light]);
+            }
+            return;
+        }
         let position = lights[light].position;
         let mut object = 0;
         while object < objects.len() {
@@ -75,6 +86,15 @@ impl<const N: usize, const L: usize> ShadowCaches<N, L> {
     /// Light `light`'s cones, by object; `None` for a light the scene does not have.
     pub(crate) fn cones(&self, light: usize) -> Option<&[ShadowCone; N]> {
         self.cones.get(light)
+    }
+
+    /// Light `light`'s sweep of a scene of `count` objects, more than 32 and at most
+    /// `shadow_sweep::MOST`; `None` for other scenes or a light out of range.
+    pub(crate) fn sweep(&self, light: usize, count: usize) -> Option<&[u32]> {
+        if count <= 32 || count > shadow_sweep::MOST {
+            return None;
+        }
+        self.shadowers.get(light)?.get(..count)
     }
 
     /// The objects (below 32) a shadow ray towards light `light` from a hit on object

@@ -148,8 +148,10 @@ fn far_from_row<const N: usize, const L: usize>(
 /// shadow ray along it is blocked: the radius widened by the test's rounding, as
 /// `shadowers.rs` allows for it (√r/32 ≤ (r + 1)/64), and by the ray's rounded direction, off
 /// the exact one by 2⁻¹⁵ over at most FAR + r, which the test's closest point lies within.
-pub(crate) fn blocking_radius(radius: Fx) -> Fx {
-    radius + ((radius + Fx::ONE) >> 6) + Fx::from_bits(1 << 8) + ((FAR + radius) >> 15)
+// In raw units, for the `const` shadow sweep: radii lie within 2048, and nothing overflows.
+pub(crate) const fn blocking_radius(radius: Fx) -> Fx {
+    let (r, far) = (radius.to_bits(), FAR.to_bits());
+    Fx::from_bits(r + ((r + (1 << 16)) >> 6) + (1 << 8) + ((far + r) >> 15))
 }
 
 /// `v.scale(s)`: once a row and light, twice.

@@ -1,0 +1,282 @@
+//! The shadow sweep: for a scene of more than 32 objects, whose shadow sets (`shadowers`) no
+//! longer fit a 32-bit mask, each light's objects sorted by where their [`ShadowCone`] begins
+//! along one axis of the directions seen from the light, so that a shadow ray finds by a
+//! binary search the few whose cone may hold it, and tries no other.
+//!
+//! A shadow ray that a sphere blocks runs along a line from its hit to the light that passes
+//! within `ρ` of the sphere's centre `C` (`blocking_radius`: the radius widened by every
+//! rounding of the test), so seen from the light it leaves along a direction `u` at an angle
+//! `θ` from the centre's, `a`, with `sin θ ≤ ρ/D` (`D` the centre's distance), and each of its
+//! components within the chord `|u − a| = 2 sin(θ/2)` of `a`'s: along the chosen axis `k` the
+//! directions lie in an interval, `a_k ± chord`. Each
+//! light's objects are kept sorted by the interval's start, as the nodes of a balanced binary
+//! tree laid out in order (each range's middle entry the root of the range), each holding the
+//! largest end of its subtree: a shadow ray seen from the light along `u` walks down only into
+//! subtrees whose largest end reaches `u_k`, and right of an entry only where that entry's
+//! start does: the few objects whose interval may hold `u_k`, and a few nodes along two paths.
+//! The axis is the one along which the light's cones' axes spread widest. Planes and the
+//! spheres a cone cannot bound span every direction, and are always tried.
+//!
+//! Each entry is one `u32` of the scene's shadow sets, which a scene this large does not use:
+//! whether the object's cone bounds its directions (bit 31: the others sort first, and stay
+//! out of the tree), the start (9
+//! bits, from bit 22), the subtree's largest end (9 bits, from bit 13), the axis (2 bits, from bit 11)
+//! and the object (11 bits). Past 2 048 objects the sweep is not kept, and every object is
+//! tried.
+
+use crate::geometry::shape::Shape;
+use crate::numbers::vec3::Vec3;
+use crate::render::accel::shadow_rows::blocking_radius;
+use crate::scene::Object;
+
+/// The most objects a sweep indexes: 11 bits.
+pub(crate) const MOST: usize = 1 << INDEX_BITS;
+
+const INDEX_BITS: u32 = 11;
+const AXIS_SHIFT: u32 = 11;
+const END_SHIFT: u32 = 13;
+const START_SHIFT: u32 = 22;
+const BOUNDED: u32 = 1 << 31;
+const KEY_MASK: u32 = (1 << 9) - 1;
+
+/// A component in Q2.14 (−1 to 1, and a little past it for rounded unit vectors) as one of
+/// 512 steps of 2⁻⁸, rounded down: held to 0 below −1 and to 511 from 1 up, monotone, so a
+/// value within an interval comes out within its ends' steps.
+const fn step_of(q14: i32) -> u32 {
+    let shifted = (q14 + (1 << 14)) >> 6;
+    if shifted < 0 {
+        0
+    } else if shifted > KEY_MASK as i32 {
+        KEY_MASK
+    } else {
+        shifted as u32
+    }
+}
+
+/// The steps of the interval `[start, end]` (Q2.14) along which a cone's directions lie,
+/// the end rounded up.
+const fn steps_of(start: i32, end: i32) -> (u32, u32) {
+    (step_of(start), step_of(end + (1 << 6) - 1))
+}
+
+/// The interval (Q2.14) of component `axis` of the unit directions a shadow ray the sphere
+/// `shape` blocks may leave a light at `light` along; `None` for a plane, or a sphere too
+/// near the light for its directions to be bounded (`ρ/D` past ½).
+///
+/// The chord `2 sin(θ/2) = sin θ / cos(θ/2)` is at most `s·(1 + s)` for `sin θ ≤ s ≤ ½`
+/// (`1/cos(θ/2) ≤ 1.04` there); `s` is rounded up, from `D` rounded down. Four units of 2⁻¹⁴
+/// cover the rest: the axis's rounding to Q2.14 (one), the ray's rounded unit direction (half
+/// of one), and its rounding down to Q2.14 (one).
+const fn interval(light: Vec3, shape: &Shape, axis: usize) -> Option<(i32, i32)> {
+    let (centre, s) = match bound(light, shape) {
+        Some(bounded) => bounded,
+        None => return None,
+    };
+    let chord = s + ((s * s) >> 14) + 1 + 4;
+    let a = [centre.x, centre.y, centre.z];
+    let centre = a[axis].to_bits() >> 2;
+    Some((centre - chord, centre + chord))
+}
+
+/// The unit vector from `light` to a sphere's centre, and `s ≥ ρ/D` in Q2.14 (see
+/// [`interval`]); `None` for a plane or where `s` passes ½.
+const fn bound(light: Vec3, shape: &Shape) -> Option<(Vec3, i32)> {
+    let Shape::Sphere(sphere) = shape else {
+        return None;
+    };
+    // Lights and spheres lie within ±1024: the difference does not saturate.
+    let to_centre = sphere.centre().saturating_sub(light);
+    let Some(unit) = to_centre.try_normalize() else {
+        return None;
+    };
+    // `length` is within a unit of 2⁻¹⁶ of the distance.
+    let distance = to_centre.length().to_bits() as i64 - 1;
+    let rho = blocking_radius(sphere.radius()).to_bits() as i64;
+    if distance <= 2 * rho {
+        return None;
+    }
+    // At most 2¹³ (ρ/D below ½): rounded up.
+    let s = ((rho << 14) + distance - 1) / distance + 1;
+    Some((unit, s as i32))
+}
+
+/// The sweep of a light at `light` over `objects`, written into `sweep` (its first
+/// `objects.len()` entries).
+pub(crate) const fn build(light: Vec3, objects: &[Object], sweep: &mut [u32]) {
+    let count = objects.len();
+    // The axis along which the cones' axes spread widest.
+    let (mut low, mut high) = ([i32::MAX; 3], [i32::MIN; 3]);
+    let mut i = 0;
+    while i < count {
+        if let Some((unit, _)) = bound(light, &objects[i].shape) {
+            let a = [unit.x, unit.y, unit.z];
+            let mut k = 0;
+            while k < 3 {
+                let v = a[k].to_bits();
+                low[k] = if v < low[k] { v } else { low[k] };
+                high[k] = if v > high[k] { v } else { high[k] };
+                k += 1;
+            }
+        }
+        i += 1;
+    }
+    let mut axis = 0;
+    let mut k = 1;
+    while k < 3 {
+        if high[k] - low[k] > high[axis] - low[axis] {
+            axis = k;
+        }
+        k += 1;
+    }
+    // Each object's start, axis and index, sorted: the flag and the start lead, so the values
+    // sort by them.
+    let mut i = 0;
+    while i < count {
+        let tag = (axis as u32) << AXIS_SHIFT | i as u32;
+        sweep[i] = match interval(light, &objects[i].shape, axis) {
+            Some((start, end)) => BOUNDED | steps_of(start, end).0 << START_SHIFT | tag,
+            None => tag,
+        };
+        i += 1;
+    }
+    heapsort(sweep, count);
+    // The tree's largest ends, over the bounded entries.
+    let mut bounded = 0;
+    while bounded < count && sweep[bounded] & BOUNDED == 0 {
+        bounded += 1;
+    }
+    largest_ends(light, objects, sweep, bounded, count);
+}
+
+/// Writes into each entry of `sweep[lo..hi]`, the bounded ones, sorted, the largest end of its
+/// subtree (the range's middle entry is the root of the range), and returns the range's.
+const fn largest_ends(
+    light: Vec3,
+    objects: &[Object],
+    sweep: &mut [u32],
+    lo: usize,
+    hi: usize,
+) -> u32 {
+    if lo >= hi {
+        return 0;
+    }
+    let mid = lo + (hi - lo) / 2;
+    let entry = sweep[mid];
+    let axis = ((entry >> AXIS_SHIFT) & 3) as usize;
+    let mut largest = match interval(light, &objects[index_of(entry)].shape, axis) {
+        Some((start, end)) => steps_of(start, end).1,
+        None => KEY_MASK,
+    };
+    let left = largest_ends(light, objects, sweep, lo, mid);
+    let right = largest_ends(light, objects, sweep, mid + 1, hi);
+    largest = if left > largest { left } else { largest };
+    largest = if right > largest { right } else { largest };
+    sweep[mid] = entry | largest << END_SHIFT;
+    largest
+}
+
+/// The object an entry names.
+const fn index_of(entry: u32) -> usize {
+    (entry & ((1 << INDEX_BITS) - 1)) as usize
+}
+
+/// Sorts `values[..count]` in place, ascending (`const`, for `static` scenes).
+const fn heapsort(values: &mut [u32], count: usize) {
+    let mut end = count;
+    let mut start = count / 2;
+    while start > 0 {
+        start -= 1;
+        sift_down(values, start, end);
+    }
+    while end > 1 {
+        end -= 1;
+        let top = values[0];
+        values[0] = values[end];
+        values[end] = top;
+        sift_down(values, 0, end);
+    }
+}
+
+/// Moves `values[root]` down the heap `values[..end]` to where it belongs.
+const fn sift_down(values: &mut [u32], mut root: usize, end: usize) {
+    loop {
+        let mut child = 2 * root + 1;
+        if child >= end {
+            return;
+        }
+        if child + 1 < end && values[child + 1] > values[child] {
+            child += 1;
+        }
+        if values[root] >= values[child] {
+            return;
+        }
+        let top = values[root];
+        values[root] = values[child];
+        values[child] = top;
+        root = child;
+    }
+}
+
+/// Whether `tries(index)` holds for some object a shadow ray along the unit `dir` (towards
+/// the light) may meet, by a light's sweep `sweep` (the scene's objects, sorted): those whose
+/// cone bounds nothing, then the bounded ones whose interval may hold the ray's step.
+pub(crate) fn any(sweep: &[u32], dir: Vec3, mut tries: impl FnMut(usize) -> bool) -> bool {
+    let Some(&first) = sweep.first() else {
+        return false;
+    };
+    let bounded = sweep.partition_point(|&entry| entry & BOUNDED == 0);
+    let (unbounded, tree) = sweep.split_at(bounded);
+    if unbounded.iter().any(|&entry| tries(index_of(entry))) {
+        return true;
+    }
+    let axis = ((first >> AXIS_SHIFT) & 3) as usize;
+    let component = [dir.x, dir.y, dir.z][axis.min(2)];
+    // Seen from the light the ray leaves along −dir; in Q2.14, rounded down.
+    let key = step_of(-(component.to_bits() >> 2));
+    // The ranges still to walk: a tree of at most 2¹¹ entries is 12 levels deep, and each
+    // range taken leaves at most one more waiting than it found.
+    let mut ranges = [(0u16, 0u16); 16];
+    let (mut waiting, mut ranges_len) = (0..tree.len() as u16, 0);
+    loop {
+        let (lo, hi) = (waiting.start as usize, waiting.end as usize);
+        let next = if lo < hi {
+            let mid = lo + (hi - lo) / 2;
+            let entry = tree.get(mid).copied().unwrap_or(0);
+            if (entry >> END_SHIFT) & KEY_MASK < key {
+                None
+            } else if (entry >> START_SHIFT) & KEY_MASK > key {
+                // Every entry right of this one starts past the key too.
+                Some(lo as u16..mid as u16)
+            } else {
+                if tries(index_of(entry)) {
+                    return true;
+                }
+                match ranges.get_mut(ranges_len) {
+                    Some(slot) => {
+                        *slot = (mid as u16 + 1, hi as u16);
+                        ranges_len += 1;
+                    }
+                    // Not reached (see above); were it, the range is tried whole.
+                    None => {
+                        let rest = tree.get(mid + 1..hi).unwrap_or(&[]);
+                        if rest.iter().any(|&entry| tries(index_of(entry))) {
+                            return true;
+                        }
+                    }
+                }
+                Some(lo as u16..mid as u16)
+            }
+        } else {
+            None
+        };
+        waiting = match next {
+            Some(range) => range,
+            None if ranges_len > 0 => {
+                ranges_len -= 1;
+                let (lo, hi) = ranges.get(ranges_len).copied().unwrap_or((0, 0));
+                lo..hi
+            }
+            None => return false,
+        };
+    }
+}
