@@ -320,3 +320,108 @@ fn spheres_whose_fronts_meet_equal_their_pixels_traced_one_by_one() {
         }
     }
 }
+
+/// Marsaglia's xorshift64: the random fields below, the same on every run.
+struct XorShift(u64);
+
+impl XorShift {
+    /// A value drawn evenly from `lo..hi`.
+    fn between(&mut self, lo: f32, hi: f32) -> f32 {
+        let s = &mut self.0;
+        *s ^= *s << 13;
+        *s ^= *s >> 7;
+        *s ^= *s << 17;
+        lo + (*s >> 40) as f32 / (1u64 << 24) as f32 * (hi - lo)
+    }
+}
+
+/// A random field of `count` objects in a scene of capacity `N`: a floor, now and then a
+/// tilted wall or a ceiling among them (anywhere in the order, so planes get bits past the
+/// 64th too), and spheres of every size on, above, through and around the floor, some shiny
+/// and a few mirrors; one to three lights, one of them now and then among the spheres.
+fn random_field<const N: usize>(rng: &mut XorShift, count: usize) -> fixray::Scene<N> {
+    use fixray::{Light, Material, Plane, Sphere};
+    let light = |rng: &mut XorShift| {
+        let at = [
+            rng.between(-30.0, 30.0),
+            rng.between(1.0, 30.0),
+            rng.between(-40.0, 15.0),
+        ];
+        Light::new(at, rng.between(0.3, 0.9)).unwrap()
+    };
+    let mut scene: fixray::Scene<N> =
+        fixray::Scene::new(light(rng), 0.15, Rgb::new(20, 40, 90)).unwrap();
+    for _ in 0..rng.between(0.0, 2.99) as usize {
+        scene.add_light(light(rng)).unwrap();
+    }
+    let floor = Plane::new([0.0, 0.0, 0.0], [0.0, 1.0, 0.0]).unwrap();
+    scene.add_plane(floor, Rgb::new(150, 150, 140)).unwrap();
+    while scene.objects().len() < count {
+        let colour = Rgb::new(
+            rng.between(30.0, 250.0) as u8,
+            rng.between(30.0, 250.0) as u8,
+            rng.between(30.0, 250.0) as u8,
+        );
+        let kind = rng.between(0.0, 1.0);
+        if kind < 0.04 {
+            let normal = [rng.between(-1.0, 1.0), rng.between(-0.3, 0.3), 1.0];
+            let at = [0.0, 0.0, rng.between(-70.0, -30.0)];
+            scene
+                .add_plane(Plane::new(at, normal).unwrap(), colour)
+                .unwrap();
+            continue;
+        }
+        if kind < 0.06 {
+            let ceiling = Plane::new([0.0, rng.between(12.0, 30.0), 0.0], [0.0, -1.0, 0.0]);
+            scene.add_plane(ceiling.unwrap(), colour).unwrap();
+            continue;
+        }
+        let z = rng.between(-50.0, -3.0);
+        let x = rng.between(-1.0, 1.0) * (4.0 - z * 0.6);
+        let radius = rng.between(0.2, if kind < 0.1 { 6.0 } else { 1.5 });
+        let y = radius * rng.between(-0.5, 1.0) + rng.between(0.0, 4.0).powi(2);
+        let material = match kind {
+            k if k < 0.12 => Material::new(colour, 0.3, 0.8, 60, 0.6).unwrap(),
+            k if k < 0.3 => Material::new(colour, 0.8, 0.5, 20, 0.0).unwrap(),
+            _ => Material::matte(colour),
+        };
+        let sphere = Sphere::new([x, y, z], radius).unwrap();
+        scene.add_sphere(sphere, material).unwrap();
+    }
+    scene
+}
+
+/// Random fields of spheres and planes with 64, 65 and 200 objects in scenes of capacity 64,
+/// 65 and 200, and of 20 objects in one of capacity 200, seen from several places: past 32
+/// objects every shadow ray goes by its light's sweep, past a capacity of 64 every row names
+/// its objects by a crowd, and past 64 objects that a row can meet some are its extras.
+#[test]
+fn random_fields_past_32_and_64_objects_equal_their_pixels_traced_one_by_one() {
+    let mut rng = XorShift(0x0f1e_1d5a_ba5e_64ff);
+    let views = [
+        ([0.0, 6.0, 8.0], [0.0, 0.0, -20.0]),
+        ([-12.0, 2.0, 4.0], [6.0, 1.0, -30.0]),
+        ([3.0, 25.0, -10.0], [0.0, 0.0, -25.0]),
+        ([0.0, 0.7, 2.0], [0.0, 0.7, -40.0]),
+    ];
+    for round in 0..3 {
+        let (eye, target) = views[round % views.len()];
+        let camera = fixray::Camera::look_at(eye, target)
+            .fov_degrees(50.0 + 20.0 * round as f32)
+            .size(Size::new(72, 54))
+            .build()
+            .unwrap();
+        rows_match_tracing_each_pixel(&random_field::<64>(&mut rng, 64), &camera);
+        rows_match_tracing_each_pixel(&random_field::<65>(&mut rng, 65), &camera);
+        rows_match_tracing_each_pixel(&random_field::<200>(&mut rng, 200), &camera);
+        rows_match_tracing_each_pixel(&random_field::<200>(&mut rng, 20), &camera);
+    }
+    let (eye, target) = views[3];
+    let camera = fixray::Camera::look_at(eye, target)
+        .size(Size::new(72, 54))
+        .build()
+        .unwrap();
+    let mut crowd = random_field::<200>(&mut rng, 200);
+    crowd.set_shadows(false);
+    rows_match_tracing_each_pixel(&crowd, &camera);
+}

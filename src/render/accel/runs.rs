@@ -302,4 +302,36 @@ mod tests {
         }
         assert_eq!(count, 1);
     }
+
+    #[test]
+    fn a_row_that_meets_more_than_64_objects_tries_the_rest_as_extras() {
+        // A floor, a hundred small balls in a row across the view at the eye's height, and
+        // one above them: the middle rows can meet the floor and every ball, 101 objects.
+        use crate::{Plane, Rgb, Sphere, render_row};
+        let light = crate::Light::new([0.0, 20.0, 10.0], 0.8).unwrap();
+        let mut scene: Scene<110, 1> = Scene::new(light, 0.1, Rgb::BLACK).unwrap();
+        let floor = Plane::new([0.0, -1.0, 0.0], [0.0, 1.0, 0.0]).unwrap();
+        scene.add_plane(floor, Rgb::WHITE).unwrap();
+        for i in 0..100 {
+            let ball = Sphere::new([(i as f32 - 49.5) * 0.3, 0.0, -20.0], 0.14).unwrap();
+            scene.add_sphere(ball, Rgb::new(200, i as u8, 40)).unwrap();
+        }
+        let high = Sphere::new([0.0, 3.0, -20.0], 1.0).unwrap();
+        scene.add_sphere(high, Rgb::new(40, 40, 200)).unwrap();
+        let camera = Camera::look_at([0.0, 0.0, 0.0], [0.0, 0.0, -20.0])
+            .size(crate::Size::new(96, 31))
+            .build()
+            .unwrap();
+        let mut crowd = Crowd::EMPTY;
+        let runs = Runs::crowded(&scene, &camera, 15, &mut crowd);
+        assert_eq!(runs.eye().extras().len(), 101 - 64);
+        let mut out = [Rgb::BLACK; 96];
+        for row in 0..31 {
+            render_row(&scene, &camera, row, &mut out).unwrap();
+            for (col, pixel) in (0..).zip(&out) {
+                let traced = scene.trace(&camera.ray(col, row));
+                assert_eq!(*pixel, traced, "row {row}, column {col}");
+            }
+        }
+    }
 }

@@ -280,3 +280,80 @@ pub(crate) fn any(sweep: &[u32], dir: Vec3, mut tries: impl FnMut(usize) -> bool
         };
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geometry::ray::Ray;
+    use crate::scene::{Light, Rgb, Scene};
+    use crate::{Plane, Sphere};
+
+    /// Random scenes of 33 to 150 objects (spheres of every size, some holding or touching a
+    /// light, and planes), shadow rays from random points towards each light: the sweep leads
+    /// to every object that blocks a ray.
+    #[test]
+    fn the_sweep_leads_to_every_object_that_blocks_a_shadow_ray() {
+        let mut rng = crate::xorshift::XorShift(0x5eed_5eeb_0000_0033);
+        let (mut blocked, mut tried, mut rays) = (0u64, 0u64, 0u64);
+        for world in 0..40 {
+            let light = |rng: &mut crate::xorshift::XorShift| {
+                let at = [rng.signed(30.0), rng.signed(30.0), rng.signed(30.0)];
+                Light::new(at, 0.5).unwrap()
+            };
+            let mut scene: Scene<150, 3> = Scene::new(light(&mut rng), 0.1, Rgb::BLACK).unwrap();
+            scene.add_light(light(&mut rng)).unwrap();
+            let count = 33 + (rng.next() % 118) as usize;
+            while scene.objects().len() < count {
+                if rng.next() % 20 == 0 {
+                    let normal = [rng.signed(1.0), rng.signed(1.0), rng.signed(1.0)];
+                    let at = [rng.signed(20.0), rng.signed(20.0), rng.signed(20.0)];
+                    if let Ok(plane) = Plane::new(at, normal) {
+                        scene.add_plane(plane, Rgb::WHITE).unwrap();
+                    }
+                    continue;
+                }
+                let centre = [rng.signed(25.0), rng.signed(25.0), rng.signed(25.0)];
+                let radius = 0.05 + rng.signed(1.0).abs() * if world % 3 == 0 { 12.0 } else { 2.0 };
+                scene
+                    .add_sphere(Sphere::new(centre, radius).unwrap(), Rgb::WHITE)
+                    .unwrap();
+            }
+            let objects = scene.objects();
+            for (light_index, light) in scene.lights().iter().enumerate() {
+                let sweep = scene.shadow_caches().sweep(light_index, count).unwrap();
+                for _ in 0..400 {
+                    let from = Vec3::from_ints(0, 0, 0)
+                        + Vec3::new(
+                            crate::Fx::from_num(rng.signed(30.0)),
+                            crate::Fx::from_num(rng.signed(30.0)),
+                            crate::Fx::from_num(rng.signed(30.0)),
+                        );
+                    let to_light = light.position() - from;
+                    let Some(dir) = to_light.try_normalize() else {
+                        continue;
+                    };
+                    let d2 = to_light.length_squared_wide();
+                    let ray = Ray::new_unchecked(from, dir);
+                    let blocks = |i: usize| objects[i].shape.blocks(&ray, d2);
+                    // Every object the sweep leads to, and then every one that blocks.
+                    let mut visited = [false; 150];
+                    let none = any(sweep, dir, |i| {
+                        visited[i] = true;
+                        false
+                    });
+                    assert!(!none);
+                    for i in (0..count).filter(|&i| blocks(i)) {
+                        assert!(visited[i], "world {world}, light {light_index}: object {i}");
+                        blocked += 1;
+                    }
+                    rays += 1;
+                    tried += visited.iter().filter(|&&v| v).count() as u64;
+                }
+            }
+        }
+        // Rays meet blockers often enough for the test to mean something, and the sweep
+        // leads to far fewer objects than the scenes hold (91 on average).
+        assert!(blocked > rays, "{blocked} blockers of {rays} rays");
+        assert!(tried * 3 < rays * 91, "{tried} tried for {rays} rays");
+    }
+}
