@@ -63,7 +63,7 @@ pub(crate) trait Names: Copy {
     fn object(self, bit: usize) -> usize;
 
     /// The objects every ray of the row tries besides its set.
-    fn extras<'s>(&'s self) -> &'s [u32];
+    fn extras(&self) -> &[u32];
 
     /// Whether a ray's set is all it tries, in a scene of `count` objects.
     fn alone(self, count: usize) -> bool;
@@ -80,7 +80,7 @@ impl Names for ByIndex {
         bit
     }
 
-    fn extras<'s>(&'s self) -> &'s [u32] {
+    fn extras(&self) -> &[u32] {
         &[]
     }
 
@@ -96,7 +96,7 @@ impl<const N: usize> Names for &Crowd<N> {
         Crowd::object(self, bit)
     }
 
-    fn extras<'s>(&'s self) -> &'s [u32] {
+    fn extras(&self) -> &[u32] {
         Crowd::extras(self)
     }
 

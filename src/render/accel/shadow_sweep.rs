@@ -304,7 +304,7 @@ mod tests {
             scene.add_light(light(&mut rng)).unwrap();
             let count = 33 + (rng.next() % 118) as usize;
             while scene.objects().len() < count {
-                if rng.next() % 20 == 0 {
+                if rng.next().is_multiple_of(20) {
                     let normal = [rng.signed(1.0), rng.signed(1.0), rng.signed(1.0)];
                     let at = [rng.signed(20.0), rng.signed(20.0), rng.signed(20.0)];
                     if let Ok(plane) = Plane::new(at, normal) {
