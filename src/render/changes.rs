@@ -42,13 +42,14 @@
 //! two of the nine whose bounding box adds the fewest pixels become that box. A renderer redraws, on each row, the hull of
 //! the rectangles there ([`Damage::row_span`]): one window per row for a display driver.
 
-mod outline;
+mod exact;
 mod redraw;
+mod screen;
 mod shadow;
 
 pub use redraw::{render_changes, render_row_span};
 
-use outline::{behind_eye, outline};
+use screen::{Screen, behind_eye};
 
 use core::ops::Range;
 
@@ -58,7 +59,6 @@ use embedded_graphics::primitives::Rectangle;
 use crate::geometry::shape::Shape;
 use crate::render::accel::cull::near_row_plane;
 use crate::render::camera::Camera;
-use crate::render::camera::project::ScreenMap;
 use crate::scene::Scene;
 
 /// At most this many rectangles make a [`Damage`]; more are merged into bounding boxes.
@@ -312,33 +312,27 @@ impl Damage {
         self.add(merged);
     }
 
-    /// The pixels whose centres lie within `margin` pixels of the screen box
-    /// `[u0, u1] × [v0, v1]`, clipped to the screen; `None` if the box is not finite.
-    fn area_of(&self, [u0, v0]: [f32; 2], [u1, v1]: [f32; 2], margin: f32) -> Option<Option<Area>> {
-        if !(u0.is_finite() && u1.is_finite() && v0.is_finite() && v1.is_finite()) {
-            return None;
-        }
-        // Pixel x's centre is x + ½: x from ⌈u0 − margin − ½⌉ to ⌊u1 + margin − ½⌋.
-        let span = |lo: f32, hi: f32, count: u16| -> Option<(u16, u16)> {
-            let limit = f32::from(count) + 1.0;
-            let first = libm::ceilf((lo - margin - 0.5).clamp(-1.0, limit));
-            let last = libm::floorf((hi + margin - 0.5).clamp(-1.0, limit));
-            let first = first.max(0.0) as u16;
-            let end = ((last + 1.0).max(0.0) as u16).min(count);
+    /// The pixels whose centres lie within `margin` of the screen box `[low, high]` (all in
+    /// units of 1/256 of a pixel), clipped to the screen: `None` if there are none. Each
+    /// value within ±2⁴¹, so nothing here overflows.
+    fn area_of(&self, low: [i64; 2], high: [i64; 2], margin: i64) -> Option<Area> {
+        // Pixel x's centre is x + ½: x from ⌈(low − margin)/256 − ½⌉ to
+        // ⌊(high + margin)/256 − ½⌋.
+        let span = |lo: i64, hi: i64, count: u16| -> Option<(u16, u16)> {
+            let first = (lo - margin - 128 + 255).div_euclid(256);
+            let last = (hi + margin - 128).div_euclid(256);
+            let first = first.clamp(0, count.into()) as u16;
+            let end = (last + 1).clamp(0, count.into()) as u16;
             (first < end).then_some((first, end))
         };
-        let Some((left, right)) = span(u0, u1, self.cols) else {
-            return Some(None);
-        };
-        let Some((top, bottom)) = span(v0, v1, self.rows) else {
-            return Some(None);
-        };
-        Some(Some(Area {
+        let (left, right) = span(low[0], high[0], self.cols)?;
+        let (top, bottom) = span(low[1], high[1], self.rows)?;
+        Some(Area {
             left,
             top,
             right,
             bottom,
-        }))
+        })
     }
 
     /// Works out the region into `self`, or `None` where only the whole screen will do.
@@ -366,10 +360,16 @@ impl Damage {
         if see_through(before) || see_through(after) {
             return None;
         }
-        let map = ScreenMap::new(camera);
+        let screen = Screen::new(camera)?;
         // Silhouettes to add: of sphere `i` as it is before, and as it is after the edit.
-        let mut outline_before = [false; N];
-        let mut outline_after = [false; N];
+        let mut outline_before = [None; N];
+        let mut outline_after = [None; N];
+        let screen_area = Area {
+            left: 0,
+            top: 0,
+            right: self.cols,
+            bottom: self.rows,
+        };
         for index in (0..after.objects().len()).filter(|&i| changed(i)) {
             let (Some(old), Some(new)) = (before.objects().get(index), after.objects().get(index))
             else {
@@ -380,15 +380,16 @@ impl Damage {
                 // A plane's new material shows only where the plane is seen, and casts the
                 // same shadows: within its rectangle, if it has one.
                 (Shape::Plane(old_plane), Shape::Plane(new_plane)) if old_plane == new_plane => {
-                    if let Some(area) = shadow::plane_area(&new_plane, camera.eye(), &map, self)? {
+                    if let Some(area) = shadow::plane_area(&new_plane, camera.eye(), &screen, self)?
+                    {
                         self.add(area);
                     }
                     continue;
                 }
                 _ => return None,
             };
-            *outline_before.get_mut(index)? = true;
-            *outline_after.get_mut(index)? = true;
+            *outline_before.get_mut(index)? = Some(screen_area);
+            *outline_after.get_mut(index)? = Some(screen_area);
             if old_ball == new_ball || !after.shadows() {
                 continue;
             }
@@ -400,7 +401,7 @@ impl Damage {
                         &ball,
                         light,
                         camera,
-                        &map,
+                        &screen,
                         &changed,
                         &mut outline_after,
                     )?;
@@ -410,22 +411,25 @@ impl Damage {
         self.silhouettes(
             [(before, &outline_before), (after, &outline_after)],
             camera,
-            &map,
+            &screen,
         )
     }
 
-    /// Adds the silhouettes of the spheres marked in each `(scene, marked)` pair: the columns
-    /// of the camera's span of each by the rows whose culling keeps it (what `render_row`
-    /// tries it on), met with its outline. `O(rows · marked)`: each row's plane is found once
+    /// Adds the silhouettes of the spheres marked in each `(scene, marked)` pair, each met
+    /// with the area it is marked with: the columns of the camera's span of each by the rows
+    /// whose culling keeps it (what `render_row` tries it on). `O(rows · marked)`: each row's plane is found once
     /// for both scenes, and only the marked spheres are tested against it, by the test
     /// `Scene::seen_from_row_plane` makes.
     fn silhouettes<const N: usize, const L: usize>(
         &mut self,
-        scenes: [(&Scene<N, L>, &[bool; N]); 2],
+        scenes: [(&Scene<N, L>, &[Option<Area>; N]); 2],
         camera: &Camera,
-        map: &ScreenMap,
+        screen: &Screen,
     ) -> Option<()> {
-        if scenes.iter().all(|(_, marked)| !marked.iter().any(|&m| m)) {
+        if scenes
+            .iter()
+            .all(|(_, marked)| marked.iter().all(Option::is_none))
+        {
             return Some(());
         }
         // First and last row (inclusive) on which each marked sphere survives culling.
@@ -435,7 +439,7 @@ impl Damage {
             let normal = camera.row_plane_normal(row);
             for ((scene, marked), rows) in scenes.iter().zip(rows.iter_mut()) {
                 for (index, object) in scene.objects().iter().enumerate() {
-                    let (Some(true), Some(range)) =
+                    let (Some(Some(_)), Some(range)) =
                         (marked.get(index).copied(), rows.get_mut(index))
                     else {
                         continue;
@@ -454,7 +458,7 @@ impl Damage {
             }
         }
         for ((scene, marked), rows) in scenes.iter().zip(&rows) {
-            self.outlines(scene, marked, rows, camera, map)?;
+            self.outlines(scene, marked, rows, camera, screen)?;
         }
         Some(())
     }
@@ -464,20 +468,21 @@ impl Damage {
     fn outlines<const N: usize, const L: usize>(
         &mut self,
         scene: &Scene<N, L>,
-        marked: &[bool; N],
+        marked: &[Option<Area>; N],
         rows: &[(u16, u16); N],
         camera: &Camera,
-        map: &ScreenMap,
+        screen: &Screen,
     ) -> Option<()> {
         for (index, object) in scene.objects().iter().enumerate() {
-            let (Some(true), Some(&(top, last))) = (marked.get(index).copied(), rows.get(index))
+            let (Some(Some(within)), Some(&(top, last))) =
+                (marked.get(index).copied(), rows.get(index))
             else {
                 continue;
             };
             let Shape::Sphere(ball) = object.shape else {
                 return None;
             };
-            if top > last || behind_eye(&ball, camera, map) {
+            if top > last || behind_eye(&ball, camera, screen) {
                 continue;
             }
             let (first, end) = camera.column_span(ball.centre(), ball.radius())?;
@@ -492,13 +497,7 @@ impl Damage {
                 right,
                 bottom: last + 1,
             };
-            // Both bounds hold every pixel that sees the sphere: so does their overlap.
-            let area = match outline(&ball, camera, map, self) {
-                Some(Some(outline)) => outline.meet(&culled),
-                Some(None) => None,
-                None => Some(culled),
-            };
-            if let Some(area) = area {
+            if let Some(area) = culled.meet(&within) {
                 self.add(area);
             }
         }
@@ -574,24 +573,28 @@ mod tests {
     #[test]
     fn screen_boxes_become_pixels_whose_centres_lie_within_the_margin() {
         let damage = Damage::none(&camera());
-        // Centres x + ½ within [10.2 − 1, 20.7 + 1]: columns 9 to 21.
-        let area = damage.area_of([10.2, 5.0], [20.7, 6.0], 1.0);
+        let at = |x: f64| (x * 256.0) as i64;
+        // Centres x + ½ within [10.2 − 1, 20.7 + 1]: columns 9 to 21; rows likewise.
+        let area = damage.area_of([at(10.2), at(5.0)], [at(20.7), at(6.0)], 256);
         assert_eq!(
             area,
-            Some(Some(Area {
+            Some(Area {
                 left: 9,
                 top: 4,
                 right: 22,
                 bottom: 7
-            }))
+            })
         );
-        // Off the screen, clipped; not finite, refused.
+        // A centre exactly on the margin's edge is in: column 9's centre is 9.5, and
+        // 10.5 − 1 = 9.5.
+        let edge = damage.area_of([at(10.5), 0], [at(10.5), 0], 256);
+        assert_eq!(edge.map(|a| (a.left, a.right)), Some((9, 12)));
+        // Off the screen, clipped; far off, clipped to the screen.
         assert_eq!(
-            damage.area_of([-50.0, -9.0], [-20.0, -5.0], 2.0),
-            Some(None)
+            damage.area_of([at(-50.0), at(-9.0)], [at(-20.0), at(-5.0)], 512),
+            None
         );
-        let far = damage.area_of([-1e30, 0.0], [1e30, 1.0], 2.0);
-        assert_eq!(far.flatten().map(|a| (a.left, a.right)), Some((0, 100)));
-        assert_eq!(damage.area_of([f32::NAN, 0.0], [1.0, 1.0], 2.0), None);
+        let far = damage.area_of([-(1 << 41), 0], [1 << 41, 256], 512);
+        assert_eq!(far.map(|a| (a.left, a.right)), Some((0, 100)));
     }
 }

@@ -1,0 +1,95 @@
+//! Exact integer vectors for the damage's set-up: points and offsets in raw Q16.16 units
+//! (2⁻¹⁶) held in `i64`, their products in `i128`, and square roots bounded from below and
+//! from above. Nothing here rounds but the square roots, and each says which way.
+//!
+//! Every offset the damage forms lies within ±2⁴⁴ raw: two points of the overflow-safe
+//! range are at most 2²⁸ raw apart, and a corner of a shadow at most 64 times as far from
+//! its light as a vertex of the octagon around the caster, below 2³⁸ (see `shadow.rs`). A
+//! dot product of such an offset with one of the camera's cross products (below 2⁴⁹ a
+//! component) is then below 2⁹⁶: far inside `i128`.
+
+use crate::numbers::isqrt::isqrt;
+use crate::numbers::vec3::Vec3;
+
+/// Three raw Q16.16 components, exactly.
+pub(super) type W3 = [i64; 3];
+
+/// `v`'s raw components.
+pub(super) fn raw(v: Vec3) -> W3 {
+    [
+        v.x.to_bits().into(),
+        v.y.to_bits().into(),
+        v.z.to_bits().into(),
+    ]
+}
+
+pub(super) fn sub(a: W3, b: W3) -> W3 {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+
+pub(super) fn add(a: W3, b: W3) -> W3 {
+    [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
+}
+
+/// `a · b` exactly, in the product of the two's units.
+pub(super) fn dot(a: [i128; 3], b: [i128; 3]) -> i128 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+/// `a` widened, for [`dot`] and [`cross`].
+pub(super) fn wide(a: W3) -> [i128; 3] {
+    [a[0].into(), a[1].into(), a[2].into()]
+}
+
+/// `a × b` exactly, in the product of the two's units.
+pub(super) fn cross(a: [i128; 3], b: [i128; 3]) -> [i128; 3] {
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
+}
+
+/// `|a|²` exactly.
+pub(super) fn square(a: [i128; 3]) -> u128 {
+    a.iter().map(|c| c.unsigned_abs() * c.unsigned_abs()).sum()
+}
+
+/// `⌊√x⌋`, or less: a lower bound of the root. Below 2⁶⁴ it is exact; above, the root of
+/// `x` shifted down by `2k` bits, shifted up by `k`, which only loses the low bits.
+pub(super) fn root_below(x: u128) -> u128 {
+    let k = (128 - x.leading_zeros()).saturating_sub(64).div_ceil(2);
+    u128::from(isqrt((x >> (2 * k)) as u64)) << k
+}
+
+/// An upper bound of `√x`: with `s = ⌊√(x / 4ᵏ)⌋`, `x < 4ᵏ·(⌊x / 4ᵏ⌋ + 1) ≤ 4ᵏ·(s + 1)²`.
+pub(super) fn root_above(x: u128) -> u128 {
+    let k = (128 - x.leading_zeros()).saturating_sub(64).div_ceil(2);
+    (u128::from(isqrt((x >> (2 * k)) as u64)) + 1) << k
+}
+
+/// `⌈a / b⌉` for `b > 0`, `a ≥ 0`.
+pub(super) fn ceil_div(a: u128, b: u128) -> u128 {
+    a.div_ceil(b.max(1))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn roots_bound_the_exact_root_from_both_sides() {
+        let mut x: u128 = 1;
+        for step in 0..4000u128 {
+            x = x.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(step) >> (step % 120);
+            let (low, high) = (root_below(x), root_above(x));
+            assert!(low * low <= x, "{x}");
+            assert!(high.checked_mul(high).is_none_or(|h| h > x), "{x}");
+            // Tight to a relative 2⁻³¹ or better.
+            assert!(high - low <= (low >> 31) + 2, "{x}: {low} {high}");
+        }
+        assert_eq!(root_below(u128::MAX), (1 << 64) - (1 << 32));
+        assert_eq!(root_below(99), 9);
+        assert_eq!(root_above(99), 10);
+    }
+}

@@ -1,0 +1,162 @@
+//! [`Screen`]: where a point of the world lands on a camera's screen, the inverse of
+//! [`Camera::ray`], worked out exactly in integers; the pixels that may show a convex set
+//! of points ([`Screen::area`]); and whether a sphere lies wholly behind the eye.
+
+use super::exact::{W3, ceil_div, cross, dot, raw, wide};
+use super::{Area, Damage};
+use crate::geometry::sphere::Sphere;
+use crate::render::camera::Camera;
+
+/// Nearer the eye than this, in raw Q16.16 world units along the view (1/16), no point is
+/// placed on the screen.
+pub(super) const NEAREST: i128 = 1 << 12;
+
+/// Screen positions are kept in units of 1/256 of a pixel.
+const SUB: i64 = 256;
+
+/// A camera's screen as a map from points (offsets from the eye, raw Q16.16) to pixel
+/// positions.
+///
+/// The camera's ray for pixel (`x`, `y`) runs along `forward + kx·right + ky·down` with
+/// `kx = x + ½ − cols/2` and `ky = y + ½ − rows/2`, in its rounded Q16.16 basis. Writing an
+/// offset `d` from the eye in that basis, `d = a·forward + b·right + c·down`, the offset lies
+/// on the exact line towards screen position `(cols/2 + b/a, rows/2 + c/a)`, where pixel
+/// (`x`, `y`) spans `[x, x + 1) × [y, y + 1)`. By Cramer's rule `a`, `b` and `c` are `d`
+/// dotted with `right × down`, `down × forward` and `forward × right`, over the basis's
+/// determinant `forward · (right × down)`, a common positive factor that cancels in the
+/// ratios. All of it is exact in `i128`: a component of `right` is at most 2¹⁶ + 1 raw, of
+/// `down` at most 2¹⁸ + 4 (a pixel aspect of at most 4) and of `forward` at most 2³⁰ (the ray
+/// budget), so the cross products are below 2⁴⁹ a component, and an offset within ±2⁴⁴ raw
+/// dotted with one below 2⁹⁶. Only the ray's rounding (the half pixel [`Camera`] documents),
+/// a hit point's, and the floor of a quotient to 1/256 of a pixel are left for margins.
+pub(super) struct Screen {
+    /// `right × down`, in units of 2⁻³².
+    depth: [i128; 3],
+    /// `down × forward`, in units of 2⁻³².
+    across: [i128; 3],
+    /// `forward × right`, in units of 2⁻³².
+    downward: [i128; 3],
+    /// `forward · (right × down)`, in units of 2⁻⁴⁸: positive for every camera the builders
+    /// make (`right`, `down` and `forward` are right-handed).
+    determinant: i128,
+    /// The view distance, raw.
+    view: i128,
+    /// The screen's centre in units of [`SUB`].
+    centre: [i64; 2],
+    /// The screen's larger side in pixels.
+    side: i128,
+}
+
+/// Points placed on the screen: the box of their positions and the nearest one's depth.
+pub(super) struct Placed {
+    /// Least and greatest positions (1/256 pixel), the greatest exclusive.
+    low: [i64; 2],
+    high: [i64; 2],
+    /// The least `a` (see [`Screen`]) of the points, in units of 2⁻⁴⁸.
+    nearest: i128,
+}
+
+impl Screen {
+    /// The map of `camera`'s screen, or `None` if its basis is not right-handed.
+    pub(super) fn new(camera: &Camera) -> Option<Self> {
+        let (forward, right, down) = (
+            wide(raw(camera.forward)),
+            wide(raw(camera.right)),
+            wide(raw(camera.down)),
+        );
+        let depth = cross(right, down);
+        let determinant = dot(forward, depth);
+        (determinant > 0).then(|| Screen {
+            depth,
+            across: cross(down, forward),
+            downward: cross(forward, right),
+            determinant,
+            view: camera.view.to_bits().into(),
+            centre: [
+                i64::from(camera.cols()) * SUB / 2,
+                i64::from(camera.rows()) * SUB / 2,
+            ],
+            side: camera.cols().max(camera.rows()).into(),
+        })
+    }
+
+    /// How far ahead of the eye along the view `d` lies, as `a` in units of 2⁻⁴⁸: the
+    /// depth in raw units is `a · view / determinant`.
+    fn ahead(&self, d: W3) -> i128 {
+        dot(wide(d), self.depth)
+    }
+
+    /// Places points `from_eye` (offsets from the eye, raw, each within ±2⁴⁴): `None` if
+    /// one lies less than [`NEAREST`] ahead of the eye, an empty box if there are none.
+    pub(super) fn place(&self, from_eye: impl Iterator<Item = W3>) -> Option<Placed> {
+        let mut placed = Placed {
+            low: [i64::MAX; 2],
+            high: [i64::MIN; 2],
+            nearest: i128::MAX,
+        };
+        // Positions are clamped to ±2⁴⁰ units of 1/256 (2³² pixels), far off any screen:
+        // a box clamped so still holds every pixel of the screen the exact one holds.
+        let clamp = |q: i128| q.clamp(-(1 << 40), 1 << 40) as i64;
+        for d in from_eye {
+            let a = self.ahead(d);
+            // Below 2⁸² · 2³¹ and 2¹² · 2⁶⁸ (see [`Screen`]): exact.
+            if a <= 0 || a * self.view < NEAREST * self.determinant {
+                return None;
+            }
+            let w = wide(d);
+            for (axis, onto) in [self.across, self.downward].iter().enumerate() {
+                let q = clamp((dot(w, *onto) * i128::from(SUB)).div_euclid(a));
+                let q = q + self.centre[axis];
+                placed.low[axis] = placed.low[axis].min(q);
+                placed.high[axis] = placed.high[axis].max(q + 1);
+            }
+            placed.nearest = placed.nearest.min(a);
+        }
+        Some(placed)
+    }
+
+    /// The pixels that may show a point of the convex hull of `placed`'s points, if that
+    /// point is a hit point a ray of the screen found (so within the rounding of a hit
+    /// point of the exact one): inner `None` when none of the screen may.
+    ///
+    /// A ray may miss its pixel's exact direction by half a pixel. A point `e` world units
+    /// off the exact ray at depth `z`, seen `r` pixels from the screen's centre, moves its
+    /// picture by at most `e · (view² + r²) / (view · z)` pixels; `r` is below the
+    /// screen's larger side and `z` at least the nearest point's depth (depth is linear,
+    /// so no point of the hull is nearer than its nearest vertex). Taking `e` as 2⁻¹¹ covers
+    /// a hit point's rounding (a few units of 2⁻¹⁶) and that of the points the damage
+    /// makes (at most two raw units each): the margin is half a pixel, that, and 1/256.
+    pub(super) fn area(&self, placed: &Placed, damage: &Damage) -> Option<Area> {
+        if placed.nearest == i128::MAX {
+            return None;
+        }
+        // The nearest depth in raw units, floored: at least NEAREST, so not zero.
+        let nearest = (placed.nearest * self.view / self.determinant).max(1);
+        // (view² + side²·2³²) / (view · nearest · 2¹¹) pixels, in units of 1/256 and
+        // rounded up: the view is below 2³¹ raw, the side at most 2¹², so each part is
+        // below 2⁶³.
+        let view = self.view.unsigned_abs().max(1);
+        let spread = view * view + (self.side.unsigned_abs().pow(2) << 32);
+        let hit = ceil_div(spread, view * nearest.unsigned_abs() * 8);
+        let margin = SUB / 2 + 1 + hit.min(1 << 40) as i64;
+        damage.area_of(placed.low, placed.high, margin)
+    }
+}
+
+/// Whether every point of `ball` lies farther than 1/16 behind the plane of the eye, so no
+/// ray of the screen meets it: every ray runs along `forward + kx·right + ky·down`, whose
+/// component along `right × down` is the determinant, positive, so every point a ray
+/// reaches has `(p − eye) · (right × down) ≥ 0`, to within a hit test's rounding. Exact in
+/// `i128`; false when a square would not fit.
+pub(super) fn behind_eye(ball: &Sphere, camera: &Camera, screen: &Screen) -> bool {
+    let along = screen.ahead(super::exact::sub(raw(ball.centre()), raw(camera.eye())));
+    let reach = u128::from(ball.radius().to_bits().unsigned_abs()) + (1 << 12);
+    let normal = super::exact::square(screen.depth);
+    let (Some(far), Some(round)) = (
+        along.unsigned_abs().checked_mul(along.unsigned_abs()),
+        (reach * reach).checked_mul(normal),
+    ) else {
+        return false;
+    };
+    along < 0 && far > round
+}
