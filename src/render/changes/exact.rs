@@ -68,6 +68,22 @@ pub(super) fn root_above(x: u128) -> u128 {
     (u128::from(isqrt((x >> (2 * k)) as u64)) + 1) << k
 }
 
+/// `n / d` for `d > 0`, within 3 of it, or `None` when its magnitude may reach 2³⁰: a
+/// 64-bit division in place of a 128-bit one (a long library call on every chip here).
+///
+/// Both are shifted down by `s` bits, so that `d' = ⌊d / 2ˢ⌋` has 32 bits (or `s = 0` and
+/// the division is exact); with `n' = ⌊n / 2ˢ⌋` and `q = n' / d'`,
+/// `|n'/d' − n/d| ≤ (|q| + 2) / d'`, below 2 while `|n'|` is below 2⁶² (then `|q|` is below
+/// 2³¹), and the floor adds 1.
+pub(super) fn quotient(n: i128, d: i128) -> Option<i64> {
+    let s = (128 - d.leading_zeros()).saturating_sub(32);
+    let (n, d) = (n >> s, d >> s);
+    if n.unsigned_abs() >= 1 << 62 || d <= 0 {
+        return None;
+    }
+    Some((n as i64).div_euclid(d as i64))
+}
+
 /// `⌈a / b⌉` for `b > 0`, `a ≥ 0`.
 pub(super) fn ceil_div(a: u128, b: u128) -> u128 {
     a.div_ceil(b.max(1))
@@ -76,6 +92,32 @@ pub(super) fn ceil_div(a: u128, b: u128) -> u128 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn quotients_are_within_three_of_the_exact_ones() {
+        let mut x: u128 = 7;
+        let mut next = |bits: u32| {
+            x = x
+                .wrapping_mul(6_364_136_223_846_793_005)
+                .wrapping_add(1_442_695_040_888_963_407);
+            let v = (x >> 1) as i128 >> (127 - bits);
+            v
+        };
+        let mut made = 0;
+        for step in 0..20_000u32 {
+            let d = next(1 + step % 100).abs().max(1);
+            let n = next(step % 126);
+            let exact = n.div_euclid(d);
+            match quotient(n, d) {
+                Some(q) => {
+                    assert!((i128::from(q) - exact).abs() <= 3, "{n} / {d}: {q} {exact}");
+                    made += 1;
+                }
+                None => assert!(exact.abs() >= (1 << 30) - 1, "{n} / {d}: {exact}"),
+            }
+        }
+        assert!(made > 10_000);
+    }
 
     #[test]
     fn roots_bound_the_exact_root_from_both_sides() {

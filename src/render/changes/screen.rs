@@ -2,7 +2,7 @@
 //! [`Camera::ray`], worked out exactly in integers; the pixels that may show a convex set
 //! of points ([`Screen::area`]); and whether a sphere lies wholly behind the eye.
 
-use super::exact::{W3, ceil_div, cross, dot, raw, wide};
+use super::exact::{W3, ceil_div, cross, dot, quotient, raw, wide};
 use super::{Area, Damage};
 use crate::geometry::sphere::Sphere;
 use crate::render::camera::Camera;
@@ -94,9 +94,6 @@ impl Screen {
             high: [i64::MIN; 2],
             nearest: i128::MAX,
         };
-        // Positions are clamped to ±2⁴⁰ units of 1/256 (2³² pixels), far off any screen:
-        // a box clamped so still holds every pixel of the screen the exact one holds.
-        let clamp = |q: i128| q.clamp(-(1 << 40), 1 << 40) as i64;
         for d in from_eye {
             let a = self.ahead(d);
             // Below 2⁸² · 2³¹ and 2¹² · 2⁶⁸ (see [`Screen`]): exact.
@@ -105,10 +102,14 @@ impl Screen {
             }
             let w = wide(d);
             for (axis, onto) in [self.across, self.downward].iter().enumerate() {
-                let q = clamp((dot(w, *onto) * i128::from(SUB)).div_euclid(a));
+                // Within 3 of the exact position, or at least 2³⁰ units (2²² pixels) away
+                // from the centre: then put at 2⁴⁰ units on its side, which moves it along
+                // that side, and no farther than [`Screen::area`]'s margin from the screen.
+                let along = dot(w, *onto) * i128::from(SUB);
+                let q = quotient(along, a).unwrap_or(if along < 0 { -(1 << 40) } else { 1 << 40 });
                 let q = q + self.centre[axis];
-                placed.low[axis] = placed.low[axis].min(q);
-                placed.high[axis] = placed.high[axis].max(q + 1);
+                placed.low[axis] = placed.low[axis].min(q - 3);
+                placed.high[axis] = placed.high[axis].max(q + 4);
             }
             placed.nearest = placed.nearest.min(a);
         }
@@ -121,25 +122,38 @@ impl Screen {
     ///
     /// A ray may miss its pixel's exact direction by half a pixel. A point `e` world units
     /// off the exact ray at depth `z`, seen `r` pixels from the screen's centre, moves its
-    /// picture by at most `e · (view² + r²) / (view · z)` pixels; `r` is below the
+    /// picture by at most `e · (view² + r²) / (view · (z − e))` pixels; `r` is below the
     /// screen's larger side and `z` at least the nearest point's depth (depth is linear,
     /// so no point of the hull is nearer than its nearest vertex). Taking `e` as 2⁻¹¹ covers
     /// a hit point's rounding (a few units of 2⁻¹⁶) and that of the points the damage
-    /// makes (at most two raw units each): the margin is half a pixel, that, and 1/256.
-    pub(super) fn area(&self, placed: &Placed, damage: &Damage) -> Option<Area> {
+    /// makes (at most two raw units each); a caller whose points stand for others up to
+    /// `apart` raw units away adds that. The margin is half a pixel, that, and 1/256.
+    pub(super) fn area(&self, placed: &Placed, apart: u128, damage: &Damage) -> Option<Area> {
         if placed.nearest == i128::MAX {
             return None;
         }
         // The nearest depth in raw units, floored: at least NEAREST, so not zero.
         let nearest = (placed.nearest * self.view / self.determinant).max(1);
-        // (view² + side²·2³²) / (view · nearest · 2¹¹) pixels, in units of 1/256 and
-        // rounded up: the view is below 2³¹ raw, the side at most 2¹², so each part is
-        // below 2⁶³.
+        // e · (view² + side²·2³²) / (view · nearest · 2⁸) in units of 1/256 of a pixel, `e`
+        // in raw units and rounded up: the view is below 2³¹ raw, the side at most 2¹², so
+        // the spread is below 2⁶³; `e` is held below 2⁴⁰.
         let view = self.view.unsigned_abs().max(1);
         let spread = view * view + (self.side.unsigned_abs().pow(2) << 32);
-        let hit = ceil_div(spread, view * nearest.unsigned_abs() * 8);
-        let margin = SUB / 2 + 1 + hit.min(1 << 40) as i64;
-        damage.area_of(placed.low, placed.high, margin)
+        let e = (1 << 5) + apart.min(1 << 40);
+        // The angle between a point and one `e` from it, both at least `z` away, is at
+        // most `e / (z − e)`: `z − e` stands for `z`, where `e` is below half of it.
+        let nearest = nearest.unsigned_abs();
+        if nearest <= 2 * e {
+            return damage.area_of([0, 0], [0, 0], 1 << 21);
+        }
+        let hit = ceil_div(e * spread, view * (nearest - e) << 8);
+        // A margin of more than 2¹³ pixels is the whole screen from any point within 2¹²
+        // pixels of it; one below that keeps a point put off at 2⁴⁰ units (see
+        // [`Screen::place`]) as far from the screen as it was, more than 2²¹ pixels.
+        if hit >= 1 << 21 {
+            return damage.area_of([0, 0], [0, 0], 1 << 21);
+        }
+        damage.area_of(placed.low, placed.high, SUB / 2 + 1 + hit as i64)
     }
 }
 

@@ -204,12 +204,33 @@ impl Caster {
                 return None;
             }
             for level in [low, high] {
-                // Below 2³⁸ · 2⁵⁸ before the division.
-                let at = edge.map(|c| (c * level).div_euclid(along));
+                // The crossing `level / along` of the edge's length from the light, in Q44:
+                // below 2⁵⁹ · 2⁴⁴ before the division, and at most 2¹⁸ (the receiver within
+                // 2²⁸ of the light, the sphere's centre at least 2¹⁰ from it), so below 2⁶²
+                // after. Floored, it puts the crossing, below 2³⁸ · 2⁶² before its shift,
+                // within two raw units.
+                let t = (level << 44) / along;
+                if t.unsigned_abs() >= 1 << 62 {
+                    return None;
+                }
+                let at = edge.map(|c| (c * t) >> 44);
                 *slot.next()? = add(self.light_from_eye, fitting(at)?);
             }
         }
-        Some(screen.area(&screen.place(points.into_iter())?, damage))
+        Some(screen.area(&screen.place(points.into_iter())?, 0, damage))
+    }
+
+    /// How far from the sphere's centre [`Caster::octagon`] puts its vertices (raw), or
+    /// `None` when the light is within 1/64 of the sphere widened to `widened`: the disc's
+    /// radius rounded up, made 1/64 and eight raw units wider, times 1.08301 (above
+    /// 1/cos(π/8), so that the octagon's sides lie as far out as that).
+    fn vertex(&self, widened: u128) -> Option<u128> {
+        if root_below(self.far) <= widened + CLEAR {
+            return None;
+        }
+        let cos = root_below(self.far - widened * widened);
+        let disc = ceil_div(widened * root_above(self.far), cos.max(1));
+        Some(ceil_div((disc + disc / 64 + 8) * 1109, 1024))
     }
 
     /// The edges, from the light, of a pyramid that holds the cone from the light around the
@@ -224,14 +245,7 @@ impl Caster {
     /// edge's component is below 2³⁸.
     fn octagon(&self, widened: u128) -> Option<[[i128; 3]; 8]> {
         let (one, two) = self.axes?;
-        if root_below(self.far) <= widened + CLEAR {
-            return None;
-        }
-        let cos = root_below(self.far - widened * widened);
-        // The disc's radius, rounded up; the octagon's vertices 1.08301 (above
-        // 1/cos(π/8)) times as far out as its sides must lie.
-        let disc = ceil_div(widened * root_above(self.far), cos.max(1));
-        let vertex = ceil_div((disc + disc / 64 + 8) * 1109, 1024) as i128;
+        let vertex = self.vertex(widened)? as i128;
         let mut edges = [[0i128; 3]; 8];
         let mut slot = edges.iter_mut();
         for (a, b) in [(COS, SIN), (SIN, COS)] {
@@ -283,26 +297,34 @@ impl Caster {
             if centre_height + half < -slab || centre_height - half > light_height.max(slab) {
                 return Some(None);
             }
-            let mut points = [[0i64; 3]; 16];
-            let mut farthest = 0u128;
-            let mut slot = points.iter_mut();
-            for edge in self.octagon(widened)? {
-                let fall = -dot(up, edge);
+            // An edge crosses the plane `t = H / fall` of its length from the light, at most
+            // STRETCH, found in Q56 (below 2⁶²) and floored: within 2⁻⁵⁶ of exact, and the
+            // crossing, below 2³⁸ · 2⁶² before its shift, within two raw units. It crosses
+            // the slab's faces within `slab / fall` of its length of there, at most
+            // `slab · (|u| + vertex) / fall` raw units away: [`Screen::area`] takes the
+            // eight crossings of the plane with that as their reach.
+            let edges = self.octagon(widened)?;
+            let (mut points, mut farthest, mut least) = ([[0i64; 3]; 8], 0u128, i128::MAX);
+            for (edge, point) in edges.iter().zip(points.iter_mut()) {
+                let fall = -dot(up, *edge);
                 if fall <= 0 || light_height + slab > STRETCH * fall {
                     return None;
                 }
-                for level in [slab, -slab] {
-                    let drop = light_height - level;
-                    // Below 2²⁹ · 2⁴⁵ before the division, 2³⁵ after.
-                    let along = fitting(edge.map(|c| (c * drop).div_euclid(fall)))?;
-                    farthest = farthest
-                        .max(root_above(square(wide(along))))
-                        .max(root_above(square(wide(sub(along, self.centre)))));
-                    *slot.next()? = add(self.light_from_eye, along);
-                }
+                least = least.min(fall);
+                let t = (light_height << 56) / fall;
+                let along = fitting(edge.map(|c| (c * t) >> 56))?;
+                farthest = farthest
+                    .max(square(wide(along)))
+                    .max(square(wide(sub(along, self.centre))));
+                *point = add(self.light_from_eye, along);
             }
+            // The edges are at most |u| + the octagon's vertex long (below 2²⁹ + 2³⁸), the
+            // slab below 2²³: the product below 2⁶².
+            let reach = root_above(self.far) + self.vertex(widened)? + 2;
+            let apart = ceil_div(slab as u128 * reach, least as u128);
+            let farthest = root_above(farthest) + apart;
             if farthest <= distance {
-                return Some(screen.area(&screen.place(points.into_iter())?, damage));
+                return Some(screen.area(&screen.place(points.into_iter())?, apart, damage));
             }
             distance = farthest + farthest / 4 + (1 << 16);
         }
@@ -389,5 +411,5 @@ pub(super) fn plane_area(
             }
         }
     }
-    Some(screen.area(&screen.place(corners.into_iter())?, damage))
+    Some(screen.area(&screen.place(corners.into_iter())?, 0, damage))
 }
