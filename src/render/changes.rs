@@ -57,7 +57,8 @@ use embedded_graphics::geometry::{Point, Size};
 use embedded_graphics::primitives::Rectangle;
 
 use crate::geometry::shape::Shape;
-use crate::render::accel::cull::near_row_plane;
+use crate::geometry::sphere::Sphere;
+use crate::render::accel::cull::{row_ball, row_offset};
 use crate::render::camera::Camera;
 use crate::scene::Scene;
 
@@ -388,8 +389,13 @@ impl Damage {
                 }
                 _ => return None,
             };
-            *outline_before.get_mut(index)? = Some(screen_area);
-            *outline_after.get_mut(index)? = Some(screen_area);
+            // The sphere's cube, where it can be bounded; the culling bounds it in any case.
+            let seen = |ball: &Sphere| match screen.ball_area(ball, camera.eye(), self) {
+                Some(area) => area,
+                None => Some(screen_area),
+            };
+            *outline_before.get_mut(index)? = seen(&old_ball);
+            *outline_after.get_mut(index)? = seen(&new_ball);
             if old_ball == new_ball || !after.shadows() {
                 continue;
             }
@@ -416,94 +422,100 @@ impl Damage {
     }
 
     /// Adds the silhouettes of the spheres marked in each `(scene, marked)` pair, each met
-    /// with the area it is marked with: the columns of the camera's span of each by the rows
-    /// whose culling keeps it (what `render_row` tries it on). `O(rows · marked)`: each row's plane is found once
-    /// for both scenes, and only the marked spheres are tested against it, by the test
-    /// `Scene::seen_from_row_plane` makes.
+    /// with the area it is marked with: on each row, the columns of the camera's span of
+    /// the ball the row's rays can meet of the sphere (`row_ball`, on the rows whose culling
+    /// keeps it), what `render_row` tries it on. The rows of each silhouette are taken in
+    /// [`BANDS`] bands across its mark, each the hull of its rows. `O(rows · marked)`: each
+    /// row's plane is found once for both scenes.
     fn silhouettes<const N: usize, const L: usize>(
         &mut self,
         scenes: [(&Scene<N, L>, &[Option<Area>; N]); 2],
         camera: &Camera,
         screen: &Screen,
     ) -> Option<()> {
-        if scenes
-            .iter()
-            .all(|(_, marked)| marked.iter().all(Option::is_none))
-        {
-            return Some(());
+        // Spheres wholly behind the eye are not seen at all.
+        let mut live = [[None; N]; 2];
+        for ((scene, marked), live) in scenes.iter().zip(live.iter_mut()) {
+            for ((object, mark), live) in scene.objects().iter().zip(*marked).zip(live) {
+                if let Shape::Sphere(ball) = object.shape
+                    && !behind_eye(&ball, camera, screen)
+                {
+                    *live = *mark;
+                } else if mark.is_some() && !matches!(object.shape, Shape::Sphere(_)) {
+                    return None;
+                }
+            }
         }
-        // First and last row (inclusive) on which each marked sphere survives culling.
-        let mut rows = [[(u16::MAX, 0u16); N]; 2];
-        let eye = camera.eye();
-        for row in 0..camera.rows() {
+        let marks = live.iter().flatten().flatten();
+        let (first, end) = marks.fold((u16::MAX, 0), |(first, end), m| {
+            (first.min(m.top), end.max(m.bottom))
+        });
+        let mut bands = [[[None::<Area>; BANDS]; N]; 2];
+        let (eye, cols) = (camera.eye(), camera.cols());
+        let clip = |c: i16| c.clamp(0, cols as i16) as u16;
+        for row in first..end {
             let normal = camera.row_plane_normal(row);
-            for ((scene, marked), rows) in scenes.iter().zip(rows.iter_mut()) {
-                for (index, object) in scene.objects().iter().enumerate() {
-                    let (Some(Some(_)), Some(range)) =
-                        (marked.get(index).copied(), rows.get_mut(index))
-                    else {
+            for (((scene, _), live), bands) in scenes.iter().zip(&live).zip(bands.iter_mut()) {
+                for ((index, object), (mark, bands)) in scene
+                    .objects()
+                    .iter()
+                    .enumerate()
+                    .zip(live.iter().zip(bands.iter_mut()))
+                {
+                    let (Some(within), Shape::Sphere(ball)) = (mark, object.shape) else {
                         continue;
                     };
+                    if !(within.top..within.bottom).contains(&row) {
+                        continue;
+                    }
                     // Objects past the 64th, and rows without a plane, are never culled.
-                    let kept = match (normal, object.shape) {
-                        (Some(normal), Shape::Sphere(ball)) if index < 64 => {
-                            near_row_plane(&ball, eye, normal)
-                        }
-                        _ => true,
+                    let (centre, radius) = match normal {
+                        Some(normal) if index < 64 => match row_offset(&ball, eye, normal) {
+                            Some(height) => row_ball(&ball, eye, normal, height),
+                            None => continue,
+                        },
+                        _ => (ball.centre(), ball.radius()),
                     };
-                    if kept {
-                        *range = (range.0.min(row), range.1.max(row));
+                    // A sphere with no span is tried on every column.
+                    let (left, right) = match camera.column_span(centre, radius) {
+                        Some((first, last)) => (clip(first), clip(last.saturating_add(1))),
+                        None => (0, cols),
+                    };
+                    if left >= right {
+                        continue;
+                    }
+                    let here = Area {
+                        left,
+                        top: row,
+                        right,
+                        bottom: row + 1,
+                    };
+                    let height = u32::from(within.bottom - within.top);
+                    let band = (u32::from(row - within.top) * BANDS as u32 / height) as usize;
+                    if let Some(band) = bands.get_mut(band) {
+                        *band = Some(band.map_or(here, |b| b.hull(&here)));
                     }
                 }
             }
         }
-        for ((scene, marked), rows) in scenes.iter().zip(&rows) {
-            self.outlines(scene, marked, rows, camera, screen)?;
-        }
-        Some(())
-    }
-
-    /// The silhouettes of [`Damage::silhouettes`] for one scene, given the rows each marked
-    /// sphere survives culling on.
-    fn outlines<const N: usize, const L: usize>(
-        &mut self,
-        scene: &Scene<N, L>,
-        marked: &[Option<Area>; N],
-        rows: &[(u16, u16); N],
-        camera: &Camera,
-        screen: &Screen,
-    ) -> Option<()> {
-        for (index, object) in scene.objects().iter().enumerate() {
-            let (Some(Some(within)), Some(&(top, last))) =
-                (marked.get(index).copied(), rows.get(index))
-            else {
-                continue;
-            };
-            let Shape::Sphere(ball) = object.shape else {
-                return None;
-            };
-            if top > last || behind_eye(&ball, camera, screen) {
-                continue;
-            }
-            let (first, end) = camera.column_span(ball.centre(), ball.radius())?;
-            let clip = |c: i16| c.clamp(0, camera.cols() as i16) as u16;
-            let (left, right) = (clip(first), clip(end.saturating_add(1)));
-            if left >= right {
-                continue;
-            }
-            let culled = Area {
-                left,
-                top,
-                right,
-                bottom: last + 1,
-            };
-            if let Some(area) = culled.meet(&within) {
-                self.add(area);
+        for (bands, live) in bands.iter().zip(&live) {
+            for (bands, mark) in bands.iter().zip(live) {
+                for (band, mark) in bands.iter().zip(core::iter::repeat(mark)) {
+                    if let (Some(band), Some(mark)) = (band, mark)
+                        && let Some(area) = band.meet(mark)
+                    {
+                        self.add(area);
+                    }
+                }
             }
         }
         Some(())
     }
 }
+
+/// How many bands of rows a silhouette is kept in: the hull of each is closer to a round
+/// outline than one box.
+const BANDS: usize = 4;
 
 #[cfg(test)]
 mod tests {

@@ -84,6 +84,26 @@ pub(super) fn quotient(n: i128, d: i128) -> Option<i64> {
     Some((n as i64).div_euclid(d as i64))
 }
 
+/// `n / d` for `d > 0` and `0 ≤ n < 2⁸·d`, in Q32 (below 2⁴⁰), within `(n/d + 2) · 2⁻²³`
+/// of it; `None` where `n` is out of that range. A 64-bit division in place of a 128-bit
+/// one.
+///
+/// Both are shifted down by `s` bits, so that `d' = ⌊d / 2ˢ⌋` has 24 bits (or `s = 0`, and
+/// only the last floor rounds); with `n' = ⌊n / 2ˢ⌋`, `n'/d'` lies within
+/// `(n/d + 1) · 2⁻²³` of `n/d`, and `n'` below 2³² (as `n'/d'` is below 2⁸), so
+/// `⌊n' · 2³² / d'⌋` is a 64-bit quotient, 2⁻³² more at most.
+pub(super) fn fraction(n: i128, d: i128) -> Option<u64> {
+    if n < 0 || d <= 0 {
+        return None;
+    }
+    let s = (128 - d.leading_zeros()).saturating_sub(24);
+    let (n, d) = ((n >> s) as u128, (d >> s) as u128);
+    if n >= 1 << 32 || n >= d << 8 {
+        return None;
+    }
+    Some(((n as u64) << 32) / d as u64)
+}
+
 /// `⌈a / b⌉` for `b > 0`, `a ≥ 0`.
 pub(super) fn ceil_div(a: u128, b: u128) -> u128 {
     a.div_ceil(b.max(1))
@@ -117,6 +137,35 @@ mod tests {
             }
         }
         assert!(made > 10_000);
+    }
+
+    #[test]
+    fn fractions_are_within_their_bound() {
+        let mut x: u128 = 11;
+        let mut next = |bits: u32| {
+            x = x
+                .wrapping_mul(6_364_136_223_846_793_005)
+                .wrapping_add(1_442_695_040_888_963_407);
+            ((x >> 1) as i128 >> (127 - bits)).abs()
+        };
+        let mut made = 0;
+        for step in 0..20_000u32 {
+            let d = next(1 + step % 100).max(1);
+            let n = next(step % 110);
+            let exact = n as f64 / d as f64;
+            match fraction(n, d) {
+                Some(t) => {
+                    let t = t as f64 / 2f64.powi(32);
+                    assert!(
+                        (t - exact).abs() <= (exact + 2.0) / 2f64.powi(23),
+                        "{n} / {d}: {t}"
+                    );
+                    made += 1;
+                }
+                None => assert!(exact >= 255.0 || exact >= (1u64 << 32) as f64, "{n} / {d}"),
+            }
+        }
+        assert!(made > 1_000, "{made}");
     }
 
     #[test]

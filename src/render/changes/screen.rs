@@ -2,9 +2,10 @@
 //! [`Camera::ray`], worked out exactly in integers; the pixels that may show a convex set
 //! of points ([`Screen::area`]); and whether a sphere lies wholly behind the eye.
 
-use super::exact::{W3, ceil_div, cross, dot, quotient, raw, wide};
+use super::exact::{W3, ceil_div, cross, dot, quotient, raw, sub, wide};
 use super::{Area, Damage};
 use crate::geometry::sphere::Sphere;
+use crate::numbers::vec3::Vec3;
 use crate::render::camera::Camera;
 
 /// Nearer the eye than this, in raw Q16.16 world units along the view (1/16), no point is
@@ -157,13 +158,38 @@ impl Screen {
     }
 }
 
+impl Screen {
+    /// The pixels whose rays may meet `ball`: those of the cube around it, widened by 2⁻⁸
+    /// (far more than the rounding of a primary ray's test), seen from `eye`: a hit point
+    /// lies in the sphere, to within that rounding, and so in the cube. `Some(None)` when
+    /// none can; `None` when the cube reaches within [`NEAREST`] of the plane of the eye.
+    pub(super) fn ball_area(
+        &self,
+        ball: &Sphere,
+        eye: Vec3,
+        damage: &Damage,
+    ) -> Option<Option<Area>> {
+        let centre = sub(raw(ball.centre()), raw(eye));
+        let r = i64::from(ball.radius().to_bits()) + (1 << 8);
+        let corner = |k: usize| {
+            let side = |bit: usize| if k >> bit & 1 == 0 { -r } else { r };
+            [
+                centre[0] + side(0),
+                centre[1] + side(1),
+                centre[2] + side(2),
+            ]
+        };
+        Some(self.area(&self.place((0..8).map(corner))?, 0, damage))
+    }
+}
+
 /// Whether every point of `ball` lies farther than 1/16 behind the plane of the eye, so no
 /// ray of the screen meets it: every ray runs along `forward + kx·right + ky·down`, whose
 /// component along `right × down` is the determinant, positive, so every point a ray
 /// reaches has `(p − eye) · (right × down) ≥ 0`, to within a hit test's rounding. Exact in
 /// `i128`; false when a square would not fit.
 pub(super) fn behind_eye(ball: &Sphere, camera: &Camera, screen: &Screen) -> bool {
-    let along = screen.ahead(super::exact::sub(raw(ball.centre()), raw(camera.eye())));
+    let along = screen.ahead(sub(raw(ball.centre()), raw(camera.eye())));
     let reach = u128::from(ball.radius().to_bits().unsigned_abs()) + (1 << 12);
     let normal = super::exact::square(screen.depth);
     let (Some(far), Some(round)) = (

@@ -6,7 +6,9 @@
 //! All in integers, exactly but for the square roots and quotients, each rounded the way
 //! that widens the bound (see `exact.rs` for why nothing overflows).
 
-use super::exact::{W3, add, ceil_div, cross, dot, raw, root_above, root_below, square, sub, wide};
+use super::exact::{
+    W3, add, ceil_div, cross, dot, fraction, raw, root_above, root_below, square, sub, wide,
+};
 use super::screen::Screen;
 use super::{Area, Damage};
 use crate::geometry::plane::Plane;
@@ -196,7 +198,7 @@ impl Caster {
         if high < low {
             return Some(None);
         }
-        let mut points = [[0i64; 3]; 16];
+        let (mut points, mut off) = ([[0i64; 3]; 16], 0);
         let mut slot = points.iter_mut();
         for edge in edges {
             let along = dot(edge, u);
@@ -204,20 +206,15 @@ impl Caster {
                 return None;
             }
             for level in [low, high] {
-                // The crossing `level / along` of the edge's length from the light, in Q44:
-                // below 2⁵⁹ · 2⁴⁴ before the division, and at most 2¹⁸ (the receiver within
-                // 2²⁸ of the light, the sphere's centre at least 2¹⁰ from it), so below 2⁶²
-                // after. Floored, it puts the crossing, below 2³⁸ · 2⁶² before its shift,
-                // within two raw units.
-                let t = (level << 44) / along;
-                if t.unsigned_abs() >= 1 << 62 {
-                    return None;
-                }
-                let at = edge.map(|c| (c * t) >> 44);
-                *slot.next()? = add(self.light_from_eye, fitting(at)?);
+                // The crossing `level / along` of the edge's length from the light (Q32, at
+                // most 2⁸: farther, no bound is made), and its rounding.
+                let t = fraction(level, along)?;
+                let at = fitting(edge.map(|c| (c * i128::from(t)) >> 32))?;
+                off = off.max(rounding(at, edge));
+                *slot.next()? = add(self.light_from_eye, at);
             }
         }
-        Some(screen.area(&screen.place(points.into_iter())?, 0, damage))
+        Some(screen.area(&screen.place(points.into_iter())?, off, damage))
     }
 
     /// How far from the sphere's centre [`Caster::octagon`] puts its vertices (raw), or
@@ -298,21 +295,22 @@ impl Caster {
                 return Some(None);
             }
             // An edge crosses the plane `t = H / fall` of its length from the light, at most
-            // STRETCH, found in Q56 (below 2⁶²) and floored: within 2⁻⁵⁶ of exact, and the
-            // crossing, below 2³⁸ · 2⁶² before its shift, within two raw units. It crosses
-            // the slab's faces within `slab / fall` of its length of there, at most
-            // `slab · (|u| + vertex) / fall` raw units away: [`Screen::area`] takes the
-            // eight crossings of the plane with that as their reach.
+            // STRETCH ([`fraction`], with its rounding). It crosses the slab's faces within
+            // `slab / fall` of its length of there, at most `slab · (|u| + vertex) / fall`
+            // raw units away: [`Screen::area`] takes the eight crossings of the plane with
+            // that and their rounding as their reach.
             let edges = self.octagon(widened)?;
             let (mut points, mut farthest, mut least) = ([[0i64; 3]; 8], 0u128, i128::MAX);
+            let mut off = 0;
             for (edge, point) in edges.iter().zip(points.iter_mut()) {
                 let fall = -dot(up, *edge);
                 if fall <= 0 || light_height + slab > STRETCH * fall {
                     return None;
                 }
                 least = least.min(fall);
-                let t = (light_height << 56) / fall;
-                let along = fitting(edge.map(|c| (c * t) >> 56))?;
+                let t = fraction(light_height, fall)?;
+                let along = fitting(edge.map(|c| (c * i128::from(t)) >> 32))?;
+                off = off.max(rounding(along, *edge));
                 farthest = farthest
                     .max(square(wide(along)))
                     .max(square(wide(sub(along, self.centre))));
@@ -321,7 +319,7 @@ impl Caster {
             // The edges are at most |u| + the octagon's vertex long (below 2²⁹ + 2³⁸), the
             // slab below 2²³: the product below 2⁶².
             let reach = root_above(self.far) + self.vertex(widened)? + 2;
-            let apart = ceil_div(slab as u128 * reach, least as u128);
+            let apart = ceil_div(slab as u128 * reach, least as u128) + off;
             let farthest = root_above(farthest) + apart;
             if farthest <= distance {
                 return Some(screen.area(&screen.place(points.into_iter())?, apart, damage));
@@ -330,6 +328,16 @@ impl Caster {
         }
         None
     }
+}
+
+/// How far (raw) a crossing `at = t · edge` found with a `t` from [`fraction`] may lie from
+/// the exact one: each component within `|edge_k| · (t + 2) · 2⁻²³` and the floor's unit,
+/// so all within `(|at|₁ + 2·|edge|₁) · 2⁻²³ + 4`, `|at|₁` standing for `t·|edge|₁` to
+/// within far less than the 4. Below 2⁴⁵: `at` within ±2⁴³, `edge` ±2³⁸.
+fn rounding(at: W3, edge: [i128; 3]) -> u128 {
+    let at: u128 = at.iter().map(|c| u128::from(c.unsigned_abs())).sum();
+    let edge: u128 = edge.iter().map(|c| c.unsigned_abs()).sum();
+    ((at + 2 * edge) >> 23) + 4
 }
 
 /// `v` as raw components, if each lies within ±2⁴³ (so that [`Screen::place`] may take
