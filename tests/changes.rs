@@ -671,7 +671,10 @@ fn a_new_colour_damages_only_the_sphere() {
             if after.shoot(&camera.ray(x, y)).map(|h| h.object()) == Some(ball) {
                 (left, top) = (left.min(x), top.min(y));
                 (right, bottom) = (right.max(x + 1), bottom.max(y + 1));
-                assert!(damage.row_span(y).is_some_and(|s| s.contains(&x)), "({x}, {y})");
+                assert!(
+                    damage.row_span(y).is_some_and(|s| s.contains(&x)),
+                    "({x}, {y})"
+                );
             }
         }
     }

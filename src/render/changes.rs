@@ -10,33 +10,49 @@
 //!   ambient term, the background, shadows on or off, the depth), in their number of
 //!   objects, or when an object of either scene mirrors or refracts (a mirror or glass can
 //!   show any other part of the scene); when a changed plane moved or turned, an infinite
-//!   one's material changed, or an object turned from one shape into the other; and whenever one of the bounds below cannot be made: a changed
-//!   sphere reaching behind the plane of the eye (one wholly behind it is not seen at all),
-//!   or its shadow on an infinite plane stretching too far (a light inside the sphere, or
-//!   barely higher above the plane than the sphere's top) or reaching behind the eye.
+//!   one's material changed, or an object turned from one shape into the other; and
+//!   whenever the shadow of a changed sphere on an infinite plane cannot be bounded: it
+//!   stretches too far (a light within 1/64 of the widened sphere, an edge of the pyramid
+//!   below not running down to the plane, or running more than 64 times its length to it)
+//!   or reaches within 1/16 of the plane of the eye.
 //! - **A sphere whose material alone changed**: its silhouette. **A bounded plane whose
 //!   material alone changed**: its rectangle (an infinite one: the whole screen).
 //! - **A sphere that moved or changed size**: its silhouettes before and after, and the
 //!   shadows it casts before and after on every other object from every light. A pixel
 //!   outside both silhouettes meets the same object at the same point in both scenes, and
 //!   its colour can differ only where the sphere blocks a shadow ray in one scene and not the
-//!   other: where its hit point lies in the sphere's shadow. On a sphere that shadow is
-//!   bounded by the receiver's silhouette (drawn whenever the two cones from the light, one
-//!   around each sphere, may meet); on a plane by the projection, from the light, of
-//!   octagonal prisms around the sphere (the central projection of a convex set lies in the
-//!   hull of its vertices' projections), seen through the camera, and by the plane's own rectangle when
-//!   it is bounded (which stands in alone where the shadow cannot be bounded).
+//!   other: where its hit point lies in the sphere's shadow. That shadow lies in the cone
+//!   from the light around the sphere, and in a pyramid around the cone, through an octagon
+//!   around its section at the sphere's centre. On a sphere it is bounded by the receiver's
+//!   silhouette, where the cone comes within the receiver's radius of its centre, met with
+//!   the pyramid cut between the planes across its axis that hold the receiver; on a plane
+//!   by the pyramid cut by the slab of the plane's hit points, and by the plane's own
+//!   rectangle when it is bounded (which stands in alone where the shadow cannot be
+//!   bounded). Each cut is the hull of the points where the pyramid's edges cross its
+//!   faces, and so is its picture: the pixels near the screen box of those points.
 //! - **Several changed spheres**: the union of what each gives.
 //!
-//! Silhouettes are the renderer's own culling, the spheres each row's plane can meet
-//! (`Scene::seen_from_row_plane`) and the columns of the camera's
-//! screen span of a sphere: a pixel outside them never tries the sphere in
-//! [`render_row`](crate::render_row). Shadows are bounded in `f32` once a frame, from
-//! differences taken exactly in Q16.16: the sphere is widened by more than the rounding of a
-//! shadow ray and of its test (a margin that grows with the distance to the shadow), hit
-//! points are taken to lie within 2⁻¹⁰ of their surfaces, and the screen box gets two
-//! pixels of margin and more, against the half pixel by which a ray may miss its exact
-//! direction, the rounding of a hit point seen close up, and this `f32` arithmetic.
+//! Silhouettes are the renderer's own culling: on each row the columns of the camera's span
+//! of the ball that row's rays can meet of the sphere (`row_ball`, on the rows whose plane
+//! comes near it), a pixel outside which never tries the sphere in
+//! [`render_row`](crate::render_row) (the whole row where the sphere reaches the plane of
+//! the eye and has no span; nothing where it lies wholly behind it); a changed sphere's are
+//! met with the screen box of the cube around it, and each is kept in four bands of rows.
+//!
+//! All of it is integer arithmetic, once a frame, with no `f32`: points and offsets in raw
+//! Q16.16 units in `i64`, which two points of the overflow-safe range and a shadow's
+//! crossings (at most 64 times an edge of the pyramid from the light, below 2³⁸) keep
+//! within ±2⁴⁴, and their products in `i128`, exact (the camera's cross products are below
+//! 2⁴⁹ a component, so a dot product of one with an offset is below 2⁹⁶). Square roots are
+//! bounded from below or above as the bound needs; the few quotients are 64-bit divisions of
+//! numbers shifted down together, within 3/256 of a pixel for a position and within
+//! `2⁻²³` relatively for a crossing, which widens the margin by as much. The margins: the
+//! sphere casting a shadow is widened by more than the rounding of a shadow ray and of its
+//! test (1/256, `√r/32` and 1/1024 of the distance to the shadow), a hit point is taken to
+//! lie within 2⁻¹⁰ of its surface, the octagon around the cone's section is 1/64 and eight
+//! raw units wider than it needs to be, and a screen box gets half a pixel (the most by
+//! which a ray misses its exact direction), 1/256, and what 2⁻¹¹ of a world unit (a hit
+//! point's rounding and the points' own) moves a picture at the box's nearest depth.
 //!
 //! The region is kept as at most [`MAX_RECTANGLES`] rectangles; when a ninth is needed, the
 //! two of the nine whose bounding box adds the fewest pixels become that box. A renderer redraws, on each row, the hull of
@@ -149,18 +165,18 @@ impl Damage {
     /// - the whole screen when a light, the ambient term, the background, shadows on or off,
     ///   the depth or the number of objects differ; when an object of either scene mirrors
     ///   or refracts; when a plane moved or turned, an infinite plane's material changed or
-    ///   an object changed shape kind; and when a
-    ///   bound cannot be made (a changed sphere reaching behind the plane of the eye, its
-    ///   shadow on an infinite plane stretching too far, as from a light inside it or
-    ///   barely above it, or reaching behind the eye);
+    ///   an object changed shape kind; and when the shadow of a changed sphere on an
+    ///   infinite plane cannot be bounded (it stretches too far, as from a light inside the
+    ///   sphere or barely above it, or reaches behind the eye);
     /// - a sphere whose material alone changed: its silhouette; a bounded plane whose
     ///   material alone changed: its rectangle;
     /// - a sphere that moved or changed size: its silhouettes before and after, and the
     ///   shadows it casts before and after from every light on every other object (a sphere
-    ///   that may receive them: its silhouette; a plane: the screen bound of the shadow on
-    ///   it, within the plane's own rectangle if it is bounded).
+    ///   that may receive them: its silhouette, within the screen bound of the shadow there;
+    ///   a plane: the screen bound of the shadow on it, within the plane's own rectangle if
+    ///   it is bounded).
     ///
-    /// Set-up arithmetic in `f32`, once a frame; `O(rows · objects)` for the silhouettes.
+    /// Integer arithmetic, once a frame; `O(rows · objects)` for the silhouettes.
     ///
     /// ```
     /// use fixray::{demo, render, render_changes, Damage, Framebuffer, Rgb, Sphere};

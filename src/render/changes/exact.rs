@@ -120,8 +120,7 @@ mod tests {
             x = x
                 .wrapping_mul(6_364_136_223_846_793_005)
                 .wrapping_add(1_442_695_040_888_963_407);
-            let v = (x >> 1) as i128 >> (127 - bits);
-            v
+            (x >> 1) as i128 >> (127 - bits)
         };
         let mut made = 0;
         for step in 0..20_000u32 {

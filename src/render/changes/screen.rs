@@ -147,7 +147,7 @@ impl Screen {
         if nearest <= 2 * e {
             return damage.area_of([0, 0], [0, 0], 1 << 21);
         }
-        let hit = ceil_div(e * spread, view * (nearest - e) << 8);
+        let hit = ceil_div(e * spread, (view * (nearest - e)) << 8);
         // A margin of more than 2¹³ pixels is the whole screen from any point within 2¹²
         // pixels of it; one below that keeps a point put off at 2⁴⁰ units (see
         // [`Screen::place`]) as far from the screen as it was, more than 2²¹ pixels.
