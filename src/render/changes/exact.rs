@@ -1,6 +1,7 @@
 //! Exact integer vectors for the damage's set-up: points and offsets in raw Q16.16 units
-//! (2⁻¹⁶) held in `i64`, their products in `i128`, and square roots bounded from below and
-//! from above. Nothing here rounds but the square roots, and each says which way.
+//! (2⁻¹⁶) held in `i64`, their products in `i128`, square roots bounded from below and
+//! from above, and quotients by 64-bit divisions. Nothing rounds but the roots and the
+//! quotients, and each says which way, or by how much.
 //!
 //! Every offset the damage forms lies within ±2⁴⁴ raw: two points of the overflow-safe
 //! range are at most 2²⁸ raw apart, and a corner of a shadow at most 64 times as far from

@@ -4,7 +4,8 @@
 //! points, and by the plane's own rectangle when it is bounded.
 //!
 //! All in integers, exactly but for the square roots and quotients, each rounded the way
-//! that widens the bound (see `exact.rs` for why nothing overflows).
+//! that widens the bound or with its rounding added to the margin (see `exact.rs` for why
+//! nothing overflows).
 
 use super::exact::{
     W3, add, ceil_div, cross, dot, fraction, raw, root_above, root_below, square, sub, wide,
