@@ -662,20 +662,29 @@ fn a_new_colour_damages_only_the_sphere() {
     after.set_material(ball, Rgb::new(20, 90, 250)).unwrap();
     let damage = Damage::between(&before, &after, &camera);
     let rectangles: Vec<_> = damage.rectangles().collect();
-    assert_eq!(rectangles.len(), 1, "{rectangles:?}");
-    // The pixels that see the ball, by the plain path.
+    // The silhouette in a few bands of rows, nothing else.
+    assert!((1..=4).contains(&rectangles.len()), "{rectangles:?}");
+    // The pixels that see the ball, by the plain path: each in the damage.
     let (mut left, mut top, mut right, mut bottom) = (u32::MAX, u32::MAX, 0, 0);
     for y in 0..128 {
         for x in 0..160 {
             if after.shoot(&camera.ray(x, y)).map(|h| h.object()) == Some(ball) {
                 (left, top) = (left.min(x), top.min(y));
                 (right, bottom) = (right.max(x + 1), bottom.max(y + 1));
+                assert!(
+                    damage.row_span(y).is_some_and(|s| s.contains(&x)),
+                    "({x}, {y})"
+                );
             }
         }
     }
-    let r = rectangles[0];
-    let (l, t) = (r.top_left.x as u32, r.top_left.y as u32);
-    let (rr, b) = (l + r.size.width, t + r.size.height);
+    let (l, t) = rectangles.iter().fold((u32::MAX, u32::MAX), |(l, t), r| {
+        (l.min(r.top_left.x as u32), t.min(r.top_left.y as u32))
+    });
+    let (rr, b) = rectangles.iter().fold((0, 0), |(rr, b), r| {
+        let (x, y) = (r.top_left.x as u32, r.top_left.y as u32);
+        (rr.max(x + r.size.width), b.max(y + r.size.height))
+    });
     println!("sphere seen in {left}..{right} x {top}..{bottom}, damage {l}..{rr} x {t}..{b}");
     assert!(l <= left && t <= top && rr >= right && b >= bottom);
     // The margin around the ball: two pixels (and a rounding), no more.

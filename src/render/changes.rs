@@ -10,45 +10,62 @@
 //!   ambient term, the background, shadows on or off, the depth), in their number of
 //!   objects, or when an object of either scene mirrors or refracts (a mirror or glass can
 //!   show any other part of the scene); when a changed plane moved or turned, an infinite
-//!   one's material changed, or an object turned from one shape into the other; and whenever one of the bounds below cannot be made: a changed
-//!   sphere reaching behind the plane of the eye (one wholly behind it is not seen at all),
-//!   or its shadow on an infinite plane stretching too far (a light inside the sphere, or
-//!   barely higher above the plane than the sphere's top) or reaching behind the eye.
+//!   one's material changed, or an object turned from one shape into the other; and
+//!   whenever the shadow of a changed sphere on an infinite plane cannot be bounded: it
+//!   stretches too far (a light within 1/64 of the widened sphere, an edge of the pyramid
+//!   below not running down to the plane, or running more than 64 times its length to it)
+//!   or reaches within 1/16 of the plane of the eye.
 //! - **A sphere whose material alone changed**: its silhouette. **A bounded plane whose
 //!   material alone changed**: its rectangle (an infinite one: the whole screen).
 //! - **A sphere that moved or changed size**: its silhouettes before and after, and the
 //!   shadows it casts before and after on every other object from every light. A pixel
 //!   outside both silhouettes meets the same object at the same point in both scenes, and
 //!   its colour can differ only where the sphere blocks a shadow ray in one scene and not the
-//!   other: where its hit point lies in the sphere's shadow. On a sphere that shadow is
-//!   bounded by the receiver's silhouette (drawn whenever the two cones from the light, one
-//!   around each sphere, may meet); on a plane by the projection, from the light, of
-//!   octagonal prisms around the sphere (the central projection of a convex set lies in the
-//!   hull of its vertices' projections), seen through the camera, and by the plane's own rectangle when
-//!   it is bounded (which stands in alone where the shadow cannot be bounded).
+//!   other: where its hit point lies in the sphere's shadow. That shadow lies in the cone
+//!   from the light around the sphere, and in a pyramid around the cone, through an octagon
+//!   around its section at the sphere's centre. On a sphere it is bounded by the receiver's
+//!   silhouette, where the cone comes within the receiver's radius of its centre, met with
+//!   the pyramid cut between the planes across its axis that hold the receiver; on a plane
+//!   by the pyramid cut by the slab of the plane's hit points, and by the plane's own
+//!   rectangle when it is bounded (which stands in alone where the shadow cannot be
+//!   bounded). Each cut is the hull of the points where the pyramid's edges cross its
+//!   faces, and so is its picture: the pixels near the screen box of those points.
 //! - **Several changed spheres**: the union of what each gives.
 //!
-//! Silhouettes are the renderer's own culling, the spheres each row's plane can meet
-//! (`Scene::seen_from_row_plane`) and the columns of the camera's
-//! screen span of a sphere: a pixel outside them never tries the sphere in
-//! [`render_row`](crate::render_row). Shadows are bounded in `f32` once a frame, from
-//! differences taken exactly in Q16.16: the sphere is widened by more than the rounding of a
-//! shadow ray and of its test (a margin that grows with the distance to the shadow), hit
-//! points are taken to lie within 2⁻¹⁰ of their surfaces, and the screen box gets two
-//! pixels of margin and more, against the half pixel by which a ray may miss its exact
-//! direction, the rounding of a hit point seen close up, and this `f32` arithmetic.
+//! Silhouettes are the renderer's own culling: on each row the columns of the camera's span
+//! of the ball that row's rays can meet of the sphere (`row_ball`, on the rows whose plane
+//! comes near it), a pixel outside which never tries the sphere in
+//! [`render_row`](crate::render_row) (the whole row where the sphere reaches the plane of
+//! the eye and has no span; nothing where it lies wholly behind it); a changed sphere's are
+//! met with the screen box of the cube around it, and each is kept in four bands of rows.
+//!
+//! All of it is integer arithmetic, once a frame, with no `f32`: points and offsets in raw
+//! Q16.16 units in `i64`, which two points of the overflow-safe range and a shadow's
+//! crossings (at most 64 times an edge of the pyramid from the light, below 2³⁸) keep
+//! within ±2⁴⁴, and their products in `i128`, exact (the camera's cross products are below
+//! 2⁴⁹ a component, so a dot product of one with an offset is below 2⁹⁶). Square roots are
+//! bounded from below or above as the bound needs; the few quotients are 64-bit divisions of
+//! numbers shifted down together, within 3/256 of a pixel for a position and within
+//! `2⁻²³` relatively for a crossing, which widens the margin by as much. The margins: the
+//! sphere casting a shadow is widened by more than the rounding of a shadow ray and of its
+//! test (1/256, `√r/32` and 1/1024 of the distance to the shadow), a hit point is taken to
+//! lie within 2⁻¹⁰ of its surface, the octagon around the cone's section is 1/64 and eight
+//! raw units wider than it needs to be, and a screen box gets half a pixel (the most by
+//! which a ray misses its exact direction), 1/256, and what 2⁻¹¹ of a world unit (a hit
+//! point's rounding and the points' own) moves a picture at the box's nearest depth.
 //!
 //! The region is kept as at most [`MAX_RECTANGLES`] rectangles; when a ninth is needed, the
 //! two of the nine whose bounding box adds the fewest pixels become that box. A renderer redraws, on each row, the hull of
 //! the rectangles there ([`Damage::row_span`]): one window per row for a display driver.
 
-mod outline;
+mod exact;
 mod redraw;
+mod screen;
 mod shadow;
 
 pub use redraw::{render_changes, render_row_span};
 
-use outline::{behind_eye, outline};
+use screen::{Screen, behind_eye};
 
 use core::ops::Range;
 
@@ -56,9 +73,9 @@ use embedded_graphics::geometry::{Point, Size};
 use embedded_graphics::primitives::Rectangle;
 
 use crate::geometry::shape::Shape;
-use crate::render::accel::cull::near_row_plane;
+use crate::geometry::sphere::Sphere;
+use crate::render::accel::cull::{row_ball, row_offset};
 use crate::render::camera::Camera;
-use crate::render::camera::project::ScreenMap;
 use crate::scene::Scene;
 
 /// At most this many rectangles make a [`Damage`]; more are merged into bounding boxes.
@@ -148,18 +165,18 @@ impl Damage {
     /// - the whole screen when a light, the ambient term, the background, shadows on or off,
     ///   the depth or the number of objects differ; when an object of either scene mirrors
     ///   or refracts; when a plane moved or turned, an infinite plane's material changed or
-    ///   an object changed shape kind; and when a
-    ///   bound cannot be made (a changed sphere reaching behind the plane of the eye, its
-    ///   shadow on an infinite plane stretching too far, as from a light inside it or
-    ///   barely above it, or reaching behind the eye);
+    ///   an object changed shape kind; and when the shadow of a changed sphere on an
+    ///   infinite plane cannot be bounded (it stretches too far, as from a light inside the
+    ///   sphere or barely above it, or reaches behind the eye);
     /// - a sphere whose material alone changed: its silhouette; a bounded plane whose
     ///   material alone changed: its rectangle;
     /// - a sphere that moved or changed size: its silhouettes before and after, and the
     ///   shadows it casts before and after from every light on every other object (a sphere
-    ///   that may receive them: its silhouette; a plane: the screen bound of the shadow on
-    ///   it, within the plane's own rectangle if it is bounded).
+    ///   that may receive them: its silhouette, within the screen bound of the shadow there;
+    ///   a plane: the screen bound of the shadow on it, within the plane's own rectangle if
+    ///   it is bounded).
     ///
-    /// Set-up arithmetic in `f32`, once a frame; `O(rows · objects)` for the silhouettes.
+    /// Integer arithmetic, once a frame; `O(rows · objects)` for the silhouettes.
     ///
     /// ```
     /// use fixray::{demo, render, render_changes, Damage, Framebuffer, Rgb, Sphere};
@@ -312,33 +329,27 @@ impl Damage {
         self.add(merged);
     }
 
-    /// The pixels whose centres lie within `margin` pixels of the screen box
-    /// `[u0, u1] × [v0, v1]`, clipped to the screen; `None` if the box is not finite.
-    fn area_of(&self, [u0, v0]: [f32; 2], [u1, v1]: [f32; 2], margin: f32) -> Option<Option<Area>> {
-        if !(u0.is_finite() && u1.is_finite() && v0.is_finite() && v1.is_finite()) {
-            return None;
-        }
-        // Pixel x's centre is x + ½: x from ⌈u0 − margin − ½⌉ to ⌊u1 + margin − ½⌋.
-        let span = |lo: f32, hi: f32, count: u16| -> Option<(u16, u16)> {
-            let limit = f32::from(count) + 1.0;
-            let first = libm::ceilf((lo - margin - 0.5).clamp(-1.0, limit));
-            let last = libm::floorf((hi + margin - 0.5).clamp(-1.0, limit));
-            let first = first.max(0.0) as u16;
-            let end = ((last + 1.0).max(0.0) as u16).min(count);
+    /// The pixels whose centres lie within `margin` of the screen box `[low, high]` (all in
+    /// units of 1/256 of a pixel), clipped to the screen: `None` if there are none. Each
+    /// value within ±2⁴¹, so nothing here overflows.
+    fn area_of(&self, low: [i64; 2], high: [i64; 2], margin: i64) -> Option<Area> {
+        // Pixel x's centre is x + ½: x from ⌈(low − margin)/256 − ½⌉ to
+        // ⌊(high + margin)/256 − ½⌋.
+        let span = |lo: i64, hi: i64, count: u16| -> Option<(u16, u16)> {
+            let first = (lo - margin - 128 + 255).div_euclid(256);
+            let last = (hi + margin - 128).div_euclid(256);
+            let first = first.clamp(0, count.into()) as u16;
+            let end = (last + 1).clamp(0, count.into()) as u16;
             (first < end).then_some((first, end))
         };
-        let Some((left, right)) = span(u0, u1, self.cols) else {
-            return Some(None);
-        };
-        let Some((top, bottom)) = span(v0, v1, self.rows) else {
-            return Some(None);
-        };
-        Some(Some(Area {
+        let (left, right) = span(low[0], high[0], self.cols)?;
+        let (top, bottom) = span(low[1], high[1], self.rows)?;
+        Some(Area {
             left,
             top,
             right,
             bottom,
-        }))
+        })
     }
 
     /// Works out the region into `self`, or `None` where only the whole screen will do.
@@ -366,10 +377,16 @@ impl Damage {
         if see_through(before) || see_through(after) {
             return None;
         }
-        let map = ScreenMap::new(camera);
+        let screen = Screen::new(camera)?;
         // Silhouettes to add: of sphere `i` as it is before, and as it is after the edit.
-        let mut outline_before = [false; N];
-        let mut outline_after = [false; N];
+        let mut outline_before = [None; N];
+        let mut outline_after = [None; N];
+        let screen_area = Area {
+            left: 0,
+            top: 0,
+            right: self.cols,
+            bottom: self.rows,
+        };
         for index in (0..after.objects().len()).filter(|&i| changed(i)) {
             let (Some(old), Some(new)) = (before.objects().get(index), after.objects().get(index))
             else {
@@ -380,15 +397,21 @@ impl Damage {
                 // A plane's new material shows only where the plane is seen, and casts the
                 // same shadows: within its rectangle, if it has one.
                 (Shape::Plane(old_plane), Shape::Plane(new_plane)) if old_plane == new_plane => {
-                    if let Some(area) = shadow::plane_area(&new_plane, camera.eye(), &map, self)? {
+                    if let Some(area) = shadow::plane_area(&new_plane, camera.eye(), &screen, self)?
+                    {
                         self.add(area);
                     }
                     continue;
                 }
                 _ => return None,
             };
-            *outline_before.get_mut(index)? = true;
-            *outline_after.get_mut(index)? = true;
+            // The sphere's cube, where it can be bounded; the culling bounds it in any case.
+            let seen = |ball: &Sphere| match screen.ball_area(ball, camera.eye(), self) {
+                Some(area) => area,
+                None => Some(screen_area),
+            };
+            *outline_before.get_mut(index)? = seen(&old_ball);
+            *outline_after.get_mut(index)? = seen(&new_ball);
             if old_ball == new_ball || !after.shadows() {
                 continue;
             }
@@ -400,7 +423,7 @@ impl Damage {
                         &ball,
                         light,
                         camera,
-                        &map,
+                        &screen,
                         &changed,
                         &mut outline_after,
                     )?;
@@ -410,101 +433,105 @@ impl Damage {
         self.silhouettes(
             [(before, &outline_before), (after, &outline_after)],
             camera,
-            &map,
+            &screen,
         )
     }
 
-    /// Adds the silhouettes of the spheres marked in each `(scene, marked)` pair: the columns
-    /// of the camera's span of each by the rows whose culling keeps it (what `render_row`
-    /// tries it on), met with its outline. `O(rows · marked)`: each row's plane is found once
-    /// for both scenes, and only the marked spheres are tested against it, by the test
-    /// `Scene::seen_from_row_plane` makes.
+    /// Adds the silhouettes of the spheres marked in each `(scene, marked)` pair, each met
+    /// with the area it is marked with: on each row, the columns of the camera's span of
+    /// the ball the row's rays can meet of the sphere (`row_ball`, on the rows whose culling
+    /// keeps it), what `render_row` tries it on. The rows of each silhouette are taken in
+    /// [`BANDS`] bands across its mark, each the hull of its rows. `O(rows · marked)`: each
+    /// row's plane is found once for both scenes.
     fn silhouettes<const N: usize, const L: usize>(
         &mut self,
-        scenes: [(&Scene<N, L>, &[bool; N]); 2],
+        scenes: [(&Scene<N, L>, &[Option<Area>; N]); 2],
         camera: &Camera,
-        map: &ScreenMap,
+        screen: &Screen,
     ) -> Option<()> {
-        if scenes.iter().all(|(_, marked)| !marked.iter().any(|&m| m)) {
-            return Some(());
+        // Spheres wholly behind the eye are not seen at all.
+        let mut live = [[None; N]; 2];
+        for ((scene, marked), live) in scenes.iter().zip(live.iter_mut()) {
+            for ((object, mark), live) in scene.objects().iter().zip(*marked).zip(live) {
+                if let Shape::Sphere(ball) = object.shape
+                    && !behind_eye(&ball, camera, screen)
+                {
+                    *live = *mark;
+                } else if mark.is_some() && !matches!(object.shape, Shape::Sphere(_)) {
+                    return None;
+                }
+            }
         }
-        // First and last row (inclusive) on which each marked sphere survives culling.
-        let mut rows = [[(u16::MAX, 0u16); N]; 2];
-        let eye = camera.eye();
-        for row in 0..camera.rows() {
+        let marks = live.iter().flatten().flatten();
+        let (first, end) = marks.fold((u16::MAX, 0), |(first, end), m| {
+            (first.min(m.top), end.max(m.bottom))
+        });
+        let mut bands = [[[None::<Area>; BANDS]; N]; 2];
+        let (eye, cols) = (camera.eye(), camera.cols());
+        let clip = |c: i16| c.clamp(0, cols as i16) as u16;
+        for row in first..end {
             let normal = camera.row_plane_normal(row);
-            for ((scene, marked), rows) in scenes.iter().zip(rows.iter_mut()) {
-                for (index, object) in scene.objects().iter().enumerate() {
-                    let (Some(true), Some(range)) =
-                        (marked.get(index).copied(), rows.get_mut(index))
-                    else {
+            for (((scene, _), live), bands) in scenes.iter().zip(&live).zip(bands.iter_mut()) {
+                for ((index, object), (mark, bands)) in scene
+                    .objects()
+                    .iter()
+                    .enumerate()
+                    .zip(live.iter().zip(bands.iter_mut()))
+                {
+                    let (Some(within), Shape::Sphere(ball)) = (mark, object.shape) else {
                         continue;
                     };
+                    if !(within.top..within.bottom).contains(&row) {
+                        continue;
+                    }
                     // Objects past the 64th, and rows without a plane, are never culled.
-                    let kept = match (normal, object.shape) {
-                        (Some(normal), Shape::Sphere(ball)) if index < 64 => {
-                            near_row_plane(&ball, eye, normal)
-                        }
-                        _ => true,
+                    let (centre, radius) = match normal {
+                        Some(normal) if index < 64 => match row_offset(&ball, eye, normal) {
+                            Some(height) => row_ball(&ball, eye, normal, height),
+                            None => continue,
+                        },
+                        _ => (ball.centre(), ball.radius()),
                     };
-                    if kept {
-                        *range = (range.0.min(row), range.1.max(row));
+                    // A sphere with no span is tried on every column.
+                    let (left, right) = match camera.column_span(centre, radius) {
+                        Some((first, last)) => (clip(first), clip(last.saturating_add(1))),
+                        None => (0, cols),
+                    };
+                    if left >= right {
+                        continue;
+                    }
+                    let here = Area {
+                        left,
+                        top: row,
+                        right,
+                        bottom: row + 1,
+                    };
+                    let height = u32::from(within.bottom - within.top);
+                    let band = (u32::from(row - within.top) * BANDS as u32 / height) as usize;
+                    if let Some(band) = bands.get_mut(band) {
+                        *band = Some(band.map_or(here, |b| b.hull(&here)));
                     }
                 }
             }
         }
-        for ((scene, marked), rows) in scenes.iter().zip(&rows) {
-            self.outlines(scene, marked, rows, camera, map)?;
-        }
-        Some(())
-    }
-
-    /// The silhouettes of [`Damage::silhouettes`] for one scene, given the rows each marked
-    /// sphere survives culling on.
-    fn outlines<const N: usize, const L: usize>(
-        &mut self,
-        scene: &Scene<N, L>,
-        marked: &[bool; N],
-        rows: &[(u16, u16); N],
-        camera: &Camera,
-        map: &ScreenMap,
-    ) -> Option<()> {
-        for (index, object) in scene.objects().iter().enumerate() {
-            let (Some(true), Some(&(top, last))) = (marked.get(index).copied(), rows.get(index))
-            else {
-                continue;
-            };
-            let Shape::Sphere(ball) = object.shape else {
-                return None;
-            };
-            if top > last || behind_eye(&ball, camera, map) {
-                continue;
-            }
-            let (first, end) = camera.column_span(ball.centre(), ball.radius())?;
-            let clip = |c: i16| c.clamp(0, camera.cols() as i16) as u16;
-            let (left, right) = (clip(first), clip(end.saturating_add(1)));
-            if left >= right {
-                continue;
-            }
-            let culled = Area {
-                left,
-                top,
-                right,
-                bottom: last + 1,
-            };
-            // Both bounds hold every pixel that sees the sphere: so does their overlap.
-            let area = match outline(&ball, camera, map, self) {
-                Some(Some(outline)) => outline.meet(&culled),
-                Some(None) => None,
-                None => Some(culled),
-            };
-            if let Some(area) = area {
-                self.add(area);
+        for (bands, live) in bands.iter().zip(&live) {
+            for (bands, mark) in bands.iter().zip(live) {
+                for (band, mark) in bands.iter().zip(core::iter::repeat(mark)) {
+                    if let (Some(band), Some(mark)) = (band, mark)
+                        && let Some(area) = band.meet(mark)
+                    {
+                        self.add(area);
+                    }
+                }
             }
         }
         Some(())
     }
 }
+
+/// How many bands of rows a silhouette is kept in: the hull of each is closer to a round
+/// outline than one box.
+const BANDS: usize = 4;
 
 #[cfg(test)]
 mod tests {
@@ -574,24 +601,28 @@ mod tests {
     #[test]
     fn screen_boxes_become_pixels_whose_centres_lie_within_the_margin() {
         let damage = Damage::none(&camera());
-        // Centres x + ½ within [10.2 − 1, 20.7 + 1]: columns 9 to 21.
-        let area = damage.area_of([10.2, 5.0], [20.7, 6.0], 1.0);
+        let at = |x: f64| (x * 256.0) as i64;
+        // Centres x + ½ within [10.2 − 1, 20.7 + 1]: columns 9 to 21; rows likewise.
+        let area = damage.area_of([at(10.2), at(5.0)], [at(20.7), at(6.0)], 256);
         assert_eq!(
             area,
-            Some(Some(Area {
+            Some(Area {
                 left: 9,
                 top: 4,
                 right: 22,
                 bottom: 7
-            }))
+            })
         );
-        // Off the screen, clipped; not finite, refused.
+        // A centre exactly on the margin's edge is in: column 9's centre is 9.5, and
+        // 10.5 − 1 = 9.5.
+        let edge = damage.area_of([at(10.5), 0], [at(10.5), 0], 256);
+        assert_eq!(edge.map(|a| (a.left, a.right)), Some((9, 12)));
+        // Off the screen, clipped; far off, clipped to the screen.
         assert_eq!(
-            damage.area_of([-50.0, -9.0], [-20.0, -5.0], 2.0),
-            Some(None)
+            damage.area_of([at(-50.0), at(-9.0)], [at(-20.0), at(-5.0)], 512),
+            None
         );
-        let far = damage.area_of([-1e30, 0.0], [1e30, 1.0], 2.0);
-        assert_eq!(far.flatten().map(|a| (a.left, a.right)), Some((0, 100)));
-        assert_eq!(damage.area_of([f32::NAN, 0.0], [1.0, 1.0], 2.0), None);
+        let far = damage.area_of([-(1 << 41), 0], [1 << 41, 256], 512);
+        assert_eq!(far.map(|a| (a.left, a.right)), Some((0, 100)));
     }
 }

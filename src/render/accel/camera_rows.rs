@@ -21,13 +21,6 @@ impl Camera {
         self.towards(0, row.into())
     }
 
-    /// The screen's steps of one column (`right`) and one row (`down`), as rounded: every
-    /// ray of a column lies in the plane through the eye along `down`, every ray of a row in
-    /// the one along `right`.
-    pub(crate) const fn steps(&self) -> (Vec3, Vec3) {
-        (self.right, self.down)
-    }
-
     /// One column to the right, in the units of [`Camera::row_start`].
     pub(crate) const fn column_step(&self) -> Vec3 {
         self.right

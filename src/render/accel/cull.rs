@@ -40,7 +40,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
 
     /// `Scene::seen_from_row` given the row's plane's unit normal `normal`
     /// (`Camera::row_plane_normal`), which `None` leaves every object in: the test `Runs`
-    /// makes of each sphere ([`near_row_plane`]).
+    /// makes of each sphere ([`row_offset`]).
     #[cfg(feature = "internals")]
     pub(crate) fn seen_from_row_plane(&self, eye: Vec3, normal: Option<Vec3>) -> u64 {
         let Some(normal) = normal else {
@@ -49,7 +49,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
         let mut among = !0u64;
         for (index, object) in self.objects().iter().enumerate().take(64) {
             if let Shape::Sphere(sphere) = object.shape
-                && !near_row_plane(&sphere, eye, normal)
+                && row_offset(&sphere, eye, normal).is_none()
             {
                 among &= !bits::bit(index);
             }
@@ -336,16 +336,10 @@ fn before_plane(sphere: &Sphere, plane: &Plane, from_eye: &Numerator, eye: Vec3)
     eye_height >= eye_needs && centre_height >= centre_needs
 }
 
-/// Whether `sphere` may meet a ray of the row whose plane through `eye` has the unit normal
-/// `normal` (see `Camera::row_plane_normal`): `Scene::seen_from_row_plane`'s test for one sphere,
-/// which the damage of an edit repeats exactly.
-pub(crate) fn near_row_plane(sphere: &Sphere, eye: Vec3, normal: Vec3) -> bool {
-    row_offset(sphere, eye, normal).is_some()
-}
-
-/// The height of `sphere`'s centre above the row's plane, `n·(C − eye)` rounded to nearest,
-/// where the sphere may meet a ray of the row ([`near_row_plane`]), for [`row_ball`]; `None`
-/// where it cannot.
+/// The height of `sphere`'s centre above the row's plane (through `eye`, with the unit normal
+/// `normal`: see `Camera::row_plane_normal`), `n·(C − eye)` rounded to nearest, where the
+/// sphere may meet a ray of the row, for [`row_ball`]; `None` where it cannot: the test of
+/// `Scene::seen_from_row_plane` and `Runs`, which the damage of an edit repeats exactly.
 pub(crate) fn row_offset(sphere: &Sphere, eye: Vec3, normal: Vec3) -> Option<Fx> {
     let to_centre = sphere.centre() - eye;
     let margin = Fx::from_bits(stray(to_centre.l1_raw()) as i32);
@@ -371,7 +365,7 @@ const fn stray(reach: i64) -> i64 {
 /// `height` is the centre's height above the plane as [`row_offset`] finds it.
 ///
 /// The row's rays stray from their plane by less than `margin` at the sphere (as
-/// [`near_row_plane`] bounds it, here out to the sphere's far side). The points of the sphere
+/// [`row_offset`] bounds it, here out to the sphere's far side). The points of the sphere
 /// that close to the plane lie in a ball about the centre `C'` of the circle the plane cuts
 /// from it: a point `P = C + q + h·n` (`q` across `n`, `|q|² + h² ≤ r²`) at `|d + h| ≤ margin`
 /// from the plane, `d = n·(C − eye)`, lies `|q|² + (d + h)² ≤ r² − (|d| − margin)² + margin²`

@@ -13,7 +13,6 @@ use crate::numbers::isqrt::isqrt;
 use crate::numbers::vec3::Vec3;
 
 mod builder;
-pub(crate) mod project;
 
 pub use builder::{LookAt, Orbit, Pinhole};
 
