@@ -192,8 +192,15 @@ impl<const N: usize> Eye<N> {
     /// (bit `i` for object `i`).
     pub(crate) fn new<const L: usize>(scene: &Scene<N, L>, origin: Vec3, among: u64) -> Self {
         let objects = scene.objects();
-        // Made where it is kept (an array of a few hundred bytes is not to be copied).
-        let numerators = core::array::from_fn(|index| numerator_of(objects.get(index), origin));
+        // Each plane's numerator, made where it is kept (an array of a few hundred bytes is
+        // not to be copied): the other objects' are `Numerator::NONE`.
+        let numerators = core::array::from_fn(|index| match objects.get(index) {
+            Some(Object {
+                shape: Shape::Plane(plane),
+                ..
+            }) => plane.numerator(origin),
+            _ => Numerator::NONE,
+        });
         let planes = (objects.iter().enumerate().take(64))
             .filter(|(_, object)| matches!(object.shape, Shape::Plane(_)))
             .fold(0, |planes, (index, _)| planes | bits::bit(index));
@@ -222,25 +229,19 @@ impl<'a, const N: usize> Eye<N, &'a Crowd<N>> {
         crowd: &'a Crowd<N>,
     ) -> Self {
         let objects = scene.objects();
-        let numerators = core::array::from_fn(|index| numerator_of(objects.get(index), origin));
+        let numerators = core::array::from_fn(|index| match objects.get(index) {
+            Some(Object {
+                shape: Shape::Plane(plane),
+                ..
+            }) => plane.numerator(origin),
+            _ => Numerator::NONE,
+        });
         Eye {
             numerators,
             planes,
             before_planes: 0,
             names: crowd,
         }
-    }
-}
-
-/// The Eq. 4.2 numerator of rays from `origin` for `object` if it is a plane;
-/// `Numerator::NONE` for any other object, or none.
-fn numerator_of(object: Option<&Object>, origin: Vec3) -> Numerator {
-    match object {
-        Some(Object {
-            shape: Shape::Plane(plane),
-            ..
-        }) => plane.numerator(origin),
-        _ => Numerator::NONE,
     }
 }
 
