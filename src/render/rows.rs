@@ -9,6 +9,7 @@ use crate::geometry::ray::Ray;
 use crate::geometry::shape::Shape;
 use crate::numbers::vec3::Vec3;
 use crate::render::accel::crowd::{Crowd, Names};
+use crate::render::accel::crowd_floor::{Floor, Floors};
 use crate::render::accel::matte::MatteRun;
 use crate::render::accel::row_rays::RowRays;
 use crate::render::accel::runs::Runs;
@@ -50,7 +51,9 @@ pub fn render_row<const N: usize, const L: usize>(
 }
 
 /// Paints a run [`cast_row`] hands over whole into `out[cols]`, display columns from `first`
-/// by `stride` of display row `row`: a matte run, or a run of sky (`sky`, where it is plain).
+/// by `stride` of display row `row`: a matte run (by `floor` where it shades it), or a run of
+/// sky (`sky`, where it is plain).
+#[allow(clippy::too_many_arguments)]
 fn paint_run<const N: usize, const L: usize>(
     (scene, camera, row): (&Scene<N, L>, &Camera, u16),
     (first, stride): (u16, u16),
@@ -59,12 +62,17 @@ fn paint_run<const N: usize, const L: usize>(
     run: Run<'_>,
     shadowers: &[u32; L],
     sky: Option<Rgb>,
+    floor: impl Floors<N, L>,
 ) {
     let Some(pixels) = out.get_mut(cols.start as usize..cols.end as usize) else {
         return;
     };
     match run {
-        Run::Matte(run) => scene.shade_matte_run(camera, run, shadowers, pixels),
+        Run::Matte(run) => {
+            if !floor.shade(scene, camera, run, (first, stride), pixels) {
+                scene.shade_matte_run(camera, run, shadowers, pixels);
+            }
+        }
         Run::Empty => match sky {
             Some(sky) => pixels.fill(sky),
             None => scene.paint_sky(camera, row, first, stride, pixels),
@@ -116,7 +124,8 @@ pub(crate) fn render_every<const N: usize, const L: usize>(
     if N > 64 {
         let mut crowd = Crowd::EMPTY;
         let mut runs = Runs::crowded(scene, camera, row, &mut crowd);
-        return walk_every(scene, camera, row, walks, out, &mut runs);
+        let floor = Floor::of_row(scene, camera, row, runs.eye());
+        return walk_every(scene, camera, row, walks, out, &mut runs, &floor);
     }
     walk_every(
         scene,
@@ -125,10 +134,12 @@ pub(crate) fn render_every<const N: usize, const L: usize>(
         walks,
         out,
         &mut Runs::new(scene, camera, row),
+        (),
     );
 }
 
-/// [`render_every`] along the runs `runs` of display row `row`.
+/// [`render_every`] along the runs `runs` of display row `row`, its matte runs shaded by
+/// `floor` where it shades them.
 fn walk_every<const N: usize, const L: usize, C: Names>(
     scene: &Scene<N, L>,
     camera: &Camera,
@@ -136,6 +147,7 @@ fn walk_every<const N: usize, const L: usize, C: Names>(
     walks: &[(Range<u16>, u32)],
     out: &mut [Rgb],
     runs: &mut Runs<'_, N, L, C>,
+    floor: impl Floors<N, L>,
 ) {
     // Where nothing can be hit the sky needs no rays: a plain one is its colour, a gradient
     // reads one component of each ray's direction.
@@ -164,7 +176,7 @@ fn walk_every<const N: usize, const L: usize, C: Names>(
             walk_out,
             |out, first, end, run, shadowers| {
                 let place = (start + (first << shift), stride);
-                paint_run(at, place, out, first..end, run, shadowers, sky);
+                paint_run(at, place, out, first..end, run, shadowers, sky, floor);
             },
             |out, col, ray, hit, shadowers| paint_pixel(scene, out, col, ray, hit, shadowers),
         );

@@ -158,7 +158,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// `plane`, shaded by `shade`, or the background where the plane is not met. Started at
     /// any column, it meets the same values as a walk from the run's start: the steps are
     /// exact.
-    fn matte_loop(
+    pub(crate) fn matte_loop(
         &self,
         camera: &Camera,
         plane: &Plane,
@@ -286,18 +286,18 @@ impl<const N: usize, const L: usize> Scene<N, L> {
 /// Where a stretch of a run starts: the direction towards its first column, and the step to
 /// the next, the plane's scale and reach, which the whole run shares.
 #[derive(Clone, Copy)]
-struct Walk {
-    towards: Vec3,
-    step: Vec3,
-    scale: Scale,
-    reach: u64,
+pub(crate) struct Walk {
+    pub(crate) towards: Vec3,
+    pub(crate) step: Vec3,
+    pub(crate) scale: Scale,
+    pub(crate) reach: u64,
 }
 
 impl Walk {
     /// Whether a stretch of `len` columns from this walk's start lies within reach at both
     /// ends, and so at every column: `‖w‖²` is a convex quadratic along the stretch, exact in
     /// integers.
-    fn within(&self, len: usize) -> bool {
+    pub(crate) fn within(&self, len: usize) -> bool {
         let last = self
             .towards
             .plus(self.step.steps(len.saturating_sub(1) as i32));

@@ -228,7 +228,7 @@ fn highlight_if_lit(material: &Material, light: &Light, normal: Vec3, l: Vec3, v
 /// `√distance_squared`. The ray is made here, for the few objects that come to the whole test:
 /// most shadow rays end at an empty set or at the cones, where a ray made first would be
 /// stored for nothing.
-fn blocks(object: &Object, from: Vec3, dir: Vec3, distance_squared: u64) -> bool {
+pub(crate) fn blocks(object: &Object, from: Vec3, dir: Vec3, distance_squared: u64) -> bool {
     object
         .shape
         .blocks(&Ray::new_unchecked(from, dir), distance_squared)

@@ -56,36 +56,85 @@ impl RunLine {
     // `quotient`): once a run and sphere, and in line it crowds the row's pixel loops.
     #[inline(never)]
     pub(crate) fn shadowed_by(&self, normal: Vec3, light: Vec3, sphere: &Sphere) -> Range<usize> {
+        match self.seen_from(normal, light) {
+            Ok(seen) => {
+                let (first, end, bound) = seen.sides(sphere);
+                seen.columns(first, end, bound)
+            }
+            Err(columns) => columns,
+        }
+    }
+
+    /// What the columns' tests for every sphere share for a light at `light`, on a plane whose
+    /// normal is `normal`; where they need no sphere, their answer: no column on an empty run,
+    /// every column where an end lies past the reach.
+    pub(crate) fn seen_from(&self, normal: Vec3, light: Vec3) -> Result<SeenFrom, Range<usize>> {
         let Some(last) = self.len.checked_sub(1) else {
-            return 0..0;
+            return Err(0..0);
         };
         // Where an end lies past the reach, the hits' line is not followed: points far out
         // would leave the products' budget. Within it at both ends, every column is within it
         // (‖w(k)‖² is convex in `k`), and every hit within FAR of the eye.
         let within = |k: usize| self.towards_column(k).length_squared_wide() <= self.reach;
         if !(within(0) && within(last)) {
-            return 0..self.len;
+            return Err(0..self.len);
         }
-        // ρ·‖n‖ and the rounding of `g` below (half a unit a component, times ‖P − L‖): `n`
-        // is a unit vector to within 2⁻¹⁵, so ρ·(1 + 2⁻¹⁴) and two units cover both.
-        let rho = blocking_radius(sphere.radius());
-        let rho: Fx = rho + (rho >> 14) + Fx::from_bits(2);
         // The run's ends, from the light.
         let (start, end) = (self.point(0) - light, self.point(last) - light);
-        // `g = n × (C − L)`, rounded: `g·(P − L)` is the affine side. A hit's rounding moves it
-        // by at most half a unit of `P` a component, `|g|₁ / 2` in Q32.32: the line through
-        // its values at the ends is within `slack` of every column's (the ends' roundings and
-        // the column's), and the coarse shifts move it by under two coarse units.
-        let g = normal.cross(sphere.centre() - light);
-        let slack = g.l1_raw();
-        let side = |p: Vec3| g.dot_wide_exact(p) >> COARSE;
         // The farthest a hit lies from the light: at most the farther end's exact distance
         // (convexity), which `length` truncates by under a unit and the ends' and the
         // column's roundings move by under a unit each. (Taken again over the columns found,
         // it narrows them, but costs more than it spares.)
         let far = start.length().max(end.length()).to_bits() as i64 + 3;
-        let bound = ((rho.to_bits() as i64 * far + slack) >> COARSE) + 2;
-        let Some((lo, hi)) = solve(side(start), side(end), last as i64, bound) else {
+        Ok(SeenFrom {
+            normal,
+            light,
+            start,
+            end,
+            far,
+            last,
+        })
+    }
+}
+
+/// A run's hits seen from a light, for [`RunLine::seen_from`]'s tests: the plane's normal,
+/// the light, the run's ends from it, the farthest a hit lies from it, and the run's last
+/// column.
+pub(crate) struct SeenFrom {
+    normal: Vec3,
+    light: Vec3,
+    start: Vec3,
+    end: Vec3,
+    far: i64,
+    last: usize,
+}
+
+impl SeenFrom {
+    /// The affine side of the sphere `sphere` at the run's two ends and the bound within which
+    /// it may shadow a column (coarse units): the columns are those where the line through
+    /// the two sides lies within `±bound` ([`SeenFrom::columns`]), and there are none where
+    /// both sides pass it on one side.
+    pub(crate) fn sides(&self, sphere: &Sphere) -> (i64, i64, i64) {
+        // ρ·‖n‖ and the rounding of `g` below (half a unit a component, times ‖P − L‖): `n`
+        // is a unit vector to within 2⁻¹⁵, so ρ·(1 + 2⁻¹⁴) and two units cover both.
+        let rho = blocking_radius(sphere.radius());
+        let rho: Fx = rho + (rho >> 14) + Fx::from_bits(2);
+        // `g = n × (C − L)`, rounded: `g·(P − L)` is the affine side. A hit's rounding moves it
+        // by at most half a unit of `P` a component, `|g|₁ / 2` in Q32.32: the line through
+        // its values at the ends is within `slack` of every column's (the ends' roundings and
+        // the column's), and the coarse shifts move it by under two coarse units.
+        let g = self.normal.cross(sphere.centre() - self.light);
+        let slack = g.l1_raw();
+        let side = |p: Vec3| g.dot_wide_exact(p) >> COARSE;
+        let bound = ((rho.to_bits() as i64 * self.far + slack) >> COARSE) + 2;
+        (side(self.start), side(self.end), bound)
+    }
+
+    /// The columns (indices into the run) where the line through `first` at the first and
+    /// `end` at the last lies within `±bound`: those [`SeenFrom::sides`]' sphere may shadow.
+    pub(crate) fn columns(&self, first: i64, end: i64, bound: i64) -> Range<usize> {
+        let last = self.last;
+        let Some((lo, hi)) = solve(first, end, last as i64, bound) else {
             return 0..0;
         };
         let (lo, hi) = (lo.max(0), hi.min(last as i64));

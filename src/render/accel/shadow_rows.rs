@@ -16,6 +16,7 @@
 
 use crate::geometry::plane::Plane;
 use crate::geometry::shape::Shape;
+use crate::geometry::sphere::Sphere;
 use crate::numbers::fx::{self, FAR, Fx};
 use crate::numbers::vec3::Vec3;
 use crate::scene::Scene;
@@ -63,8 +64,7 @@ pub(crate) fn row_shadowers<const N: usize, const L: usize>(
             ruled_out = [0; L];
             break;
         };
-        // The sine of the angle between the plane and the row's plane, less its rounding.
-        let sin_row = row_normal.cross(plane.normal()).length() - Fx::from_bits(1 << 3);
+        let sin_row = sin_between(row_normal, &plane);
         for (out, light) in ruled_out.iter_mut().zip(scene.lights()) {
             if *out != 0 {
                 let row = (row_normal, sin_row);
@@ -78,70 +78,102 @@ pub(crate) fn row_shadowers<const N: usize, const L: usize>(
     sets
 }
 
+/// The sine of the angle between a row's plane, whose unit normal is `row_normal`, and
+/// `plane`, `|row_normal × n|`, less its rounding.
+pub(crate) fn sin_between(row_normal: Vec3, plane: &Plane) -> Fx {
+    row_normal.cross(plane.normal()).length() - Fx::from_bits(1 << 3)
+}
+
 /// The spheres (bit `i` for object `i`) that cannot shadow any hit of the row whose plane
 /// has the unit normal `row_normal` on `plane` from a light at `light`, or `None` where the
-/// margins cannot be bounded. `sin_row` is the sine of the angle between the two planes,
-/// `|row_normal × n|`, less its rounding.
+/// margins cannot be bounded. `sin_row` is [`sin_between`] the two planes.
 fn far_from_row<const N: usize, const L: usize>(
     scene: &Scene<N, L>,
     plane: &Plane,
-    (row_normal, sin_row): (Vec3, Fx),
+    row: (Vec3, Fx),
     eye: Vec3,
     light: Vec3,
 ) -> Option<u32> {
-    let normal = plane.normal();
-    // The light's height above the plane: shadow rays from it are at least `reach` long.
-    // Lights, eyes and planes' points lie within ±LIMIT: no difference here saturates.
-    let height = normal.dot_units(light - plane.point());
-    let reach = height.abs() - OFF_PLANE;
-    if reach < Fx::from_bits(1 << 14) || sin_row < Fx::from_bits(1 << 10) {
-        return None; // a light within ¼ of the plane, or a row's plane within 1/64 of it
-    }
-    // Π's normal: the plane of the pencil through the row's line on `plane` that holds the
-    // light, `height · m − (m·(light − eye)) · n`. Its rounding, from `m`'s 2⁻¹⁴ and the
-    // products', is below `error`.
-    let to_light = light - eye;
-    let across = row_normal.dot_units(to_light);
-    let pi = scaled(row_normal, height) - scaled(normal, across);
-    let error =
-        Fx::from_bits(((height.abs().to_bits() as i64 + to_light.l1_raw()) >> 14) as i32 + 12);
-    let size = pi.length();
-    let pi = pi.try_normalize()?;
-    // A hit lies within OFF_PLANE of `plane` and within `t / 2¹²` of the row's plane, `t` its
-    // distance from the eye: within `(OFF_PLANE + t / 2¹²) / sin_row` of their line, which
-    // lies in Π. Seen from the light, at least `reach` away, with `t` at most `reach` plus
-    // `|light − eye|` more than that, the direction to the hit is off Π by at most `off`; Π's
-    // rounded normal, by `tilt`. `|light − eye|` is taken at most the sum of its components'
-    // sizes, which needs no root (each below 2¹², from coordinates within ±LIMIT).
-    let from_eye = Fx::from_bits(to_light.l1_raw().min(i32::MAX as i64 >> 2) as i32);
-    let off = quotient(
-        OFF_PLANE + ((reach.saturating_add(from_eye)) >> OFF_ROW_SHIFT),
-        product(reach, sin_row),
-    )?;
-    let tilt = quotient(error * 2, size)? + ROUNDED_DIRECTION;
-    let angle = off.saturating_add(tilt);
-    if angle >= Fx::ONE {
-        return None;
-    }
+    let pencil = Pencil::of_row(plane, row, eye, light)?;
     let mut ruled_out = 0u32;
     for (index, object) in scene.objects().iter().enumerate().take(32) {
-        let Shape::Sphere(sphere) = object.shape else {
-            continue;
-        };
+        if let Shape::Sphere(sphere) = object.shape
+            && pencil.rules_out(&sphere)
+        {
+            ruled_out |= 1 << index;
+        }
+    }
+    Some(ruled_out)
+}
+
+/// `Π` seen from a light (see the module's notes): its unit normal, the light, and the widest
+/// angle by which a shadow ray from a hit of the row may stray from it.
+pub(crate) struct Pencil {
+    pi: Vec3,
+    light: Vec3,
+    angle: Fx,
+}
+
+impl Pencil {
+    /// The pencil of the row whose plane has the unit normal `row_normal` on `plane`, seen
+    /// from a light at `light`, or `None` where the margins cannot be bounded. `sin_row` is
+    /// [`sin_between`] the two planes.
+    pub(crate) fn of_row(
+        plane: &Plane,
+        (row_normal, sin_row): (Vec3, Fx),
+        eye: Vec3,
+        light: Vec3,
+    ) -> Option<Self> {
+        let normal = plane.normal();
+        // The light's height above the plane: shadow rays from it are at least `reach` long.
+        // Lights, eyes and planes' points lie within ±LIMIT: no difference here saturates.
+        let height = normal.dot_units(light - plane.point());
+        let reach = height.abs() - OFF_PLANE;
+        if reach < Fx::from_bits(1 << 14) || sin_row < Fx::from_bits(1 << 10) {
+            return None; // a light within ¼ of the plane, or a row's plane within 1/64 of it
+        }
+        // Π's normal: the plane of the pencil through the row's line on `plane` that holds the
+        // light, `height · m − (m·(light − eye)) · n`. Its rounding, from `m`'s 2⁻¹⁴ and the
+        // products', is below `error`.
+        let to_light = light - eye;
+        let across = row_normal.dot_units(to_light);
+        let pi = scaled(row_normal, height) - scaled(normal, across);
+        let error =
+            Fx::from_bits(((height.abs().to_bits() as i64 + to_light.l1_raw()) >> 14) as i32 + 12);
+        let size = pi.length();
+        let pi = pi.try_normalize()?;
+        // A hit lies within OFF_PLANE of `plane` and within `t / 2¹²` of the row's plane, `t` its
+        // distance from the eye: within `(OFF_PLANE + t / 2¹²) / sin_row` of their line, which
+        // lies in Π. Seen from the light, at least `reach` away, with `t` at most `reach` plus
+        // `|light − eye|` more than that, the direction to the hit is off Π by at most `off`; Π's
+        // rounded normal, by `tilt`. `|light − eye|` is taken at most the sum of its components'
+        // sizes, which needs no root (each below 2¹², from coordinates within ±LIMIT).
+        let from_eye = Fx::from_bits(to_light.l1_raw().min(i32::MAX as i64 >> 2) as i32);
+        let off = quotient(
+            OFF_PLANE + ((reach.saturating_add(from_eye)) >> OFF_ROW_SHIFT),
+            product(reach, sin_row),
+        )?;
+        let tilt = quotient(error * 2, size)? + ROUNDED_DIRECTION;
+        let angle = off.saturating_add(tilt);
+        if angle >= Fx::ONE {
+            return None;
+        }
+        Some(Pencil { pi, light, angle })
+    }
+
+    /// Whether the sphere `sphere` lies too far from `Π` to shadow any hit of the row.
+    pub(crate) fn rules_out(&self, sphere: &Sphere) -> bool {
         let wide = blocking_radius(sphere.radius());
-        let to_centre = sphere.centre() - light;
+        let to_centre = sphere.centre() - self.light;
         // At least the distance to the centre; within ±2048 · 3.
         let distance = Fx::from_bits(to_centre.l1_raw() as i32);
         // The shadow ray passes within `wide` of the centre at a point at most
         // `distance + wide` from the light, which is within `(distance + wide) · angle` of Π.
         let limit = wide
-            .saturating_add(product(distance + wide, angle))
+            .saturating_add(product(distance + wide, self.angle))
             .saturating_add(Fx::from_bits(1 << 8));
-        if pi.dot_units(to_centre).abs() > limit {
-            ruled_out |= 1 << index;
-        }
+        self.pi.dot_units(to_centre).abs() > limit
     }
-    Some(ruled_out)
 }
 
 /// How near a sphere of radius `radius` the exact line from a hit to a light passes where a

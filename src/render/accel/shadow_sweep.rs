@@ -1,28 +1,32 @@
 //! The shadow sweep: for a scene of more than 32 objects, whose shadow sets (`shadowers`) no
-//! longer fit a 32-bit mask, each light's objects sorted by where their [`ShadowCone`] begins
-//! along one axis of the directions seen from the light, so that a shadow ray finds by a
-//! binary search the few whose cone may hold it, and tries no other.
+//! longer fit a 32-bit mask, each light's objects kept as a two-dimensional tree of the
+//! directions their [`ShadowCone`]s span seen from the light, so that a shadow ray walks down
+//! to the few whose cone may hold it, and tries no other.
 //!
 //! A shadow ray that a sphere blocks runs along a line from its hit to the light that passes
 //! within `ρ` of the sphere's centre `C` (`blocking_radius`: the radius widened by every
 //! rounding of the test), so seen from the light it leaves along a direction `u` at an angle
 //! `θ` from the centre's, `a`, with `sin θ ≤ ρ/D` (`D` the centre's distance), and each of its
-//! components within the chord `|u − a| = 2 sin(θ/2)` of `a`'s: along the chosen axis `k` the
-//! directions lie in an interval, `a_k ± chord`. Each
-//! light's objects are kept sorted by the interval's start, as the nodes of a balanced binary
-//! tree laid out in order (each range's middle entry the root of the range), each holding the
-//! largest end of its subtree: a shadow ray seen from the light along `u` walks down only into
+//! components within the chord `|u − a| = 2 sin(θ/2)` of `a`'s: along any axis `k` the
+//! directions lie in an interval, `a_k ± chord`, and a ray whose `u_k` lies outside it, along
+//! either of two axes, cannot meet the sphere.
+//!
+//! The tree is a k-d tree over those intervals, balanced and laid out in order (each range's
+//! middle entry the root of the range): at even depths a range is sorted by the intervals'
+//! starts along the axis along which the light's cones' axes spread widest, at odd depths
+//! along the next widest, and each root holds its own start and its subtree's largest end
+//! along its level's axis. A shadow ray seen from the light along `u` walks down only into
 //! subtrees whose largest end reaches `u_k`, and right of an entry only where that entry's
-//! start does: the few objects whose interval may hold `u_k`, and a few nodes along two paths.
-//! The axis is the one along which the light's cones' axes spread widest. Planes and the
-//! spheres a cone cannot bound span every direction, and are always tried.
+//! start does; each entry it reaches is tried. One axis alone leaves every sphere of a band
+//! of directions across the light's view; the two leave those near the ray's direction in
+//! both. Planes and the spheres a cone cannot bound span every direction, and are always
+//! tried.
 //!
 //! Each entry is one `u32` of the scene's shadow sets, which a scene this large does not use:
 //! whether the object's cone bounds its directions (bit 31: the others sort first, and stay
-//! out of the tree), the start (9
-//! bits, from bit 22), the subtree's largest end (9 bits, from bit 13), the axis (2 bits, from bit 11)
-//! and the object (11 bits). Past 2 048 objects the sweep is not kept, and every object is
-//! tried.
+//! out of the tree), the start (9 bits, from bit 22), the subtree's largest end (9 bits, from
+//! bit 13), the entry's axis (2 bits, from bit 11) and the object (11 bits). Past 2 048
+//! objects the sweep is not kept, and every object is tried.
 
 use crate::geometry::shape::Shape;
 use crate::numbers::vec3::Vec3;
@@ -55,31 +59,27 @@ const fn step_of(q14: i32) -> u32 {
 
 /// The steps of the interval `[start, end]` (Q2.14) along which a cone's directions lie,
 /// the end rounded up.
-const fn steps_of(start: i32, end: i32) -> (u32, u32) {
+const fn steps_of((start, end): (i32, i32)) -> (u32, u32) {
     (step_of(start), step_of(end + (1 << 6) - 1))
 }
 
-/// The interval (Q2.14) of component `axis` of the unit directions a shadow ray the sphere
-/// `shape` blocks may leave a light at `light` along; `None` for a plane, or a sphere too
-/// near the light for its directions to be bounded (`ρ/D` past ½).
+/// The interval (Q2.14) of component `axis` of the unit directions a shadow ray that a
+/// sphere blocks may leave a light along, from what [`bound`] finds for it: the unit vector
+/// from the light to its centre and `s ≥ ρ/D`.
 ///
 /// The chord `2 sin(θ/2) = sin θ / cos(θ/2)` is at most `s·(1 + s)` for `sin θ ≤ s ≤ ½`
 /// (`1/cos(θ/2) ≤ 1.04` there); `s` is rounded up, from `D` rounded down. Four units of 2⁻¹⁴
 /// cover the rest: the axis's rounding to Q2.14 (one), the ray's rounded unit direction (half
 /// of one), and its rounding down to Q2.14 (one).
-const fn interval(light: Vec3, shape: &Shape, axis: usize) -> Option<(i32, i32)> {
-    let (centre, s) = match bound(light, shape) {
-        Some(bounded) => bounded,
-        None => return None,
-    };
+const fn span((centre, s): (Vec3, i32), axis: usize) -> (i32, i32) {
     let chord = s + ((s * s) >> 14) + 1 + 4;
     let a = [centre.x, centre.y, centre.z];
     let centre = a[axis].to_bits() >> 2;
-    Some((centre - chord, centre + chord))
+    (centre - chord, centre + chord)
 }
 
 /// The unit vector from `light` to a sphere's centre, and `s ≥ ρ/D` in Q2.14 (see
-/// [`interval`]); `None` for a plane or where `s` passes ½.
+/// [`span`]); `None` for a plane or where `s` passes ½.
 const fn bound(light: Vec3, shape: &Shape) -> Option<(Vec3, i32)> {
     let Shape::Sphere(sphere) = shape else {
         return None;
@@ -104,7 +104,7 @@ const fn bound(light: Vec3, shape: &Shape) -> Option<(Vec3, i32)> {
 /// `objects.len()` entries).
 pub(crate) const fn build(light: Vec3, objects: &[Object], sweep: &mut [u32]) {
     let count = objects.len();
-    // The axis along which the cones' axes spread widest.
+    // The two axes along which the cones' axes spread widest, the wider first.
     let (mut low, mut high) = ([i32::MAX; 3], [i32::MIN; 3]);
     let mut i = 0;
     while i < count {
@@ -120,58 +120,97 @@ pub(crate) const fn build(light: Vec3, objects: &[Object], sweep: &mut [u32]) {
         }
         i += 1;
     }
-    let mut axis = 0;
-    let mut k = 1;
-    while k < 3 {
-        if high[k] - low[k] > high[axis] - low[axis] {
-            axis = k;
-        }
-        k += 1;
+    let spread = [
+        high[0] as i64 - low[0] as i64,
+        high[1] as i64 - low[1] as i64,
+        high[2] as i64 - low[2] as i64,
+    ];
+    let (mut first, mut second) = (0, 1);
+    if spread[1] > spread[0] {
+        (first, second) = (1, 0);
     }
-    // Each object's start, axis and index, sorted: the flag and the start lead, so the values
-    // sort by them.
+    if spread[2] > spread[first] {
+        (first, second) = (2, first);
+    } else if spread[2] > spread[second] {
+        second = 2;
+    }
+    // Each object's index, and while the tree is built its interval's starts along both axes
+    // (the first's where the start goes, the second's where the largest end goes); the
+    // objects whose cones bound nothing lack the flag and sort first.
     let mut i = 0;
     while i < count {
-        let tag = (axis as u32) << AXIS_SHIFT | i as u32;
-        sweep[i] = match interval(light, &objects[i].shape, axis) {
-            Some((start, end)) => BOUNDED | steps_of(start, end).0 << START_SHIFT | tag,
-            None => tag,
+        sweep[i] = match bound(light, &objects[i].shape) {
+            Some(bounded) => {
+                let along_first = steps_of(span(bounded, first)).0;
+                let along_second = steps_of(span(bounded, second)).0;
+                BOUNDED | along_first << START_SHIFT | along_second << END_SHIFT | i as u32
+            }
+            None => i as u32,
         };
         i += 1;
     }
-    heapsort(sweep, count);
-    // The tree's largest ends, over the bounded entries.
+    sort(sweep, 0, count, 0);
     let mut bounded = 0;
     while bounded < count && sweep[bounded] & BOUNDED == 0 {
         bounded += 1;
     }
-    largest_ends(light, objects, sweep, bounded, count);
+    subtree(light, objects, sweep, (bounded, count), [first, second], 0);
 }
 
-/// Writes into each entry of `sweep[lo..hi]`, the bounded ones, sorted, the largest end of its
-/// subtree (the range's middle entry is the root of the range), and returns the range's.
-const fn largest_ends(
+/// Lays out the bounded entries `sweep[lo..hi]` as the subtree of depth `depth`: sorted by
+/// the start along its axis (`axes[depth % 2]`), its middle entry the root, whose left and
+/// right are laid out in turn, one level deeper. The root's entry then keeps its own start
+/// and the subtree's largest end along its axis, and the axis; returned, the subtree's
+/// largest ends along both axes.
+const fn subtree(
     light: Vec3,
     objects: &[Object],
     sweep: &mut [u32],
-    lo: usize,
-    hi: usize,
-) -> u32 {
+    (lo, hi): (usize, usize),
+    axes: [usize; 2],
+    depth: usize,
+) -> [u32; 2] {
     if lo >= hi {
-        return 0;
+        return [0, 0];
     }
+    // While building, the start along the second axis stands where the largest end goes.
+    let (side, shift) = match depth % 2 {
+        0 => (0, START_SHIFT),
+        _ => (1, END_SHIFT),
+    };
+    sort(sweep, lo, hi, shift);
     let mid = lo + (hi - lo) / 2;
     let entry = sweep[mid];
-    let axis = ((entry >> AXIS_SHIFT) & 3) as usize;
-    let mut largest = match interval(light, &objects[index_of(entry)].shape, axis) {
-        Some((start, end)) => steps_of(start, end).1,
-        None => KEY_MASK,
+    let index = index_of(entry);
+    let left = subtree(light, objects, sweep, (lo, mid), axes, depth + 1);
+    let right = subtree(light, objects, sweep, (mid + 1, hi), axes, depth + 1);
+    let mut largest = match bound(light, &objects[index].shape) {
+        Some(bounded) => [
+            steps_of(span(bounded, axes[0])).1,
+            steps_of(span(bounded, axes[1])).1,
+        ],
+        None => [KEY_MASK; 2], // not reached: a bounded entry's object has a bound
     };
-    let left = largest_ends(light, objects, sweep, lo, mid);
-    let right = largest_ends(light, objects, sweep, mid + 1, hi);
-    largest = if left > largest { left } else { largest };
-    largest = if right > largest { right } else { largest };
-    sweep[mid] = entry | largest << END_SHIFT;
+    let mut k = 0;
+    while k < 2 {
+        largest[k] = if left[k] > largest[k] {
+            left[k]
+        } else {
+            largest[k]
+        };
+        largest[k] = if right[k] > largest[k] {
+            right[k]
+        } else {
+            largest[k]
+        };
+        k += 1;
+    }
+    let start = (entry >> shift) & KEY_MASK;
+    sweep[mid] = BOUNDED
+        | start << START_SHIFT
+        | largest[side] << END_SHIFT
+        | (axes[side] as u32) << AXIS_SHIFT
+        | index as u32;
     largest
 }
 
@@ -180,39 +219,50 @@ const fn index_of(entry: u32) -> usize {
     (entry & ((1 << INDEX_BITS) - 1)) as usize
 }
 
-/// Sorts `values[..count]` in place, ascending (`const`, for `static` scenes).
-const fn heapsort(values: &mut [u32], count: usize) {
+/// What `values` sort by: with `shift` 0 the whole value, else the 9 bits from `shift`.
+const fn rank(value: u32, shift: u32) -> u32 {
+    match shift {
+        0 => value,
+        _ => (value >> shift) & KEY_MASK,
+    }
+}
+
+/// Sorts `values[lo..hi]` in place by [`rank`], ascending (`const`, for `static` scenes).
+const fn sort(values: &mut [u32], lo: usize, hi: usize, shift: u32) {
+    let count = hi - lo;
     let mut end = count;
     let mut start = count / 2;
     while start > 0 {
         start -= 1;
-        sift_down(values, start, end);
+        sift_down(values, (lo, start, end), shift);
     }
     while end > 1 {
         end -= 1;
-        let top = values[0];
-        values[0] = values[end];
-        values[end] = top;
-        sift_down(values, 0, end);
+        let top = values[lo];
+        values[lo] = values[lo + end];
+        values[lo + end] = top;
+        sift_down(values, (lo, 0, end), shift);
     }
 }
 
-/// Moves `values[root]` down the heap `values[..end]` to where it belongs.
-const fn sift_down(values: &mut [u32], mut root: usize, end: usize) {
+/// Moves the heap's `root` down the heap of `end` entries from `values[lo]` to where it
+/// belongs.
+const fn sift_down(values: &mut [u32], (lo, mut root, end): (usize, usize, usize), shift: u32) {
     loop {
         let mut child = 2 * root + 1;
         if child >= end {
             return;
         }
-        if child + 1 < end && values[child + 1] > values[child] {
+        if child + 1 < end && rank(values[lo + child + 1], shift) > rank(values[lo + child], shift)
+        {
             child += 1;
         }
-        if values[root] >= values[child] {
+        if rank(values[lo + root], shift) >= rank(values[lo + child], shift) {
             return;
         }
-        let top = values[root];
-        values[root] = values[child];
-        values[child] = top;
+        let top = values[lo + root];
+        values[lo + root] = values[lo + child];
+        values[lo + child] = top;
         root = child;
     }
 }
@@ -221,18 +271,22 @@ const fn sift_down(values: &mut [u32], mut root: usize, end: usize) {
 /// the light) may meet, by a light's sweep `sweep` (the scene's objects, sorted): those whose
 /// cone bounds nothing, then the bounded ones whose interval may hold the ray's step.
 pub(crate) fn any(sweep: &[u32], dir: Vec3, mut tries: impl FnMut(usize) -> bool) -> bool {
-    let Some(&first) = sweep.first() else {
-        return false;
-    };
-    let bounded = sweep.partition_point(|&entry| entry & BOUNDED == 0);
-    let (unbounded, tree) = sweep.split_at(bounded);
-    if unbounded.iter().any(|&entry| tries(index_of(entry))) {
-        return true;
+    // The entries whose cones bound nothing, first, each tried as it is found: a scan, not a
+    // search, as there are few (the planes, most often) or else every object is tried anyway.
+    let mut bounded = 0;
+    for &entry in sweep {
+        if entry & BOUNDED != 0 {
+            break;
+        }
+        if tries(index_of(entry)) {
+            return true;
+        }
+        bounded += 1;
     }
-    let axis = ((first >> AXIS_SHIFT) & 3) as usize;
-    let component = [dir.x, dir.y, dir.z][axis.min(2)];
-    // Seen from the light the ray leaves along −dir; in Q2.14, rounded down.
-    let key = step_of(-(component.to_bits() >> 2));
+    let tree = sweep.get(bounded..).unwrap_or(&[]);
+    // Seen from the light the ray leaves along −dir; in Q2.14, rounded down, along each axis.
+    let key_of = |c: crate::numbers::fx::Fx| step_of(-(c.to_bits() >> 2));
+    let keys = [key_of(dir.x), key_of(dir.y), key_of(dir.z), 0];
     // The ranges still to walk: a tree of at most 2¹¹ entries is 12 levels deep, and each
     // range taken leaves at most one more waiting than it found.
     let mut ranges = [(0u16, 0u16); 16];
@@ -242,6 +296,7 @@ pub(crate) fn any(sweep: &[u32], dir: Vec3, mut tries: impl FnMut(usize) -> bool
         let next = if lo < hi {
             let mid = lo + (hi - lo) / 2;
             let entry = tree.get(mid).copied().unwrap_or(0);
+            let key = keys[((entry >> AXIS_SHIFT) & 3) as usize];
             if (entry >> END_SHIFT) & KEY_MASK < key {
                 None
             } else if (entry >> START_SHIFT) & KEY_MASK > key {
