@@ -122,7 +122,7 @@ pub(crate) fn render_every<const N: usize, const L: usize>(
     out: &mut [Rgb],
 ) {
     if N > 64 {
-        let mut crowd = Crowd::EMPTY;
+        let mut crowd = Crowd::empty();
         let mut runs = Runs::crowded(scene, camera, row, &mut crowd);
         let floor = Floor::of_row(scene, camera, row, runs.eye());
         return walk_every(scene, camera, row, walks, out, &mut runs, &floor);

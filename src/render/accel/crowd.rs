@@ -11,6 +11,8 @@
 //! passes 64 build one: the render path of smaller ones names objects [`ByIndex`], which
 //! takes no room and compiles to the code it was before crowds.
 
+use crate::render::accel::run_ends::RunEnds;
+
 /// Which object each of a row's bits stands for, and the row's extras.
 pub(crate) struct Crowd<const N: usize> {
     /// `objects[i]`: the object bit `i` stands for.
@@ -18,15 +20,25 @@ pub(crate) struct Crowd<const N: usize> {
     /// The objects the row can meet past the 64 that have bits, in `extra[..extras]`.
     extra: [u32; N],
     extras: usize,
+    /// The ends of the row's spans, by bit (`Runs::crowded`).
+    ends: RunEnds,
 }
 
 impl<const N: usize> Crowd<N> {
     /// No object yet.
-    pub(crate) const EMPTY: Self = Crowd {
-        objects: [0; 64],
-        extra: [0; N],
-        extras: 0,
-    };
+    pub(crate) const fn empty() -> Self {
+        Crowd {
+            objects: [0; 64],
+            extra: [0; N],
+            extras: 0,
+            ends: RunEnds::empty(),
+        }
+    }
+
+    /// Keeps the ends of the spans `spans[bit]` of the bits of `bounded`, sorted.
+    pub(crate) fn sort_ends(&mut self, bounded: u64, spans: &[(i16, i16)]) {
+        self.ends = RunEnds::new(bounded, spans);
+    }
 
     /// Gives the next bit, `bit`, to object `index`, or, from the 65th, makes it an extra.
     pub(crate) fn add(&mut self, bit: usize, index: usize) {
@@ -67,6 +79,11 @@ pub(crate) trait Names: Copy {
 
     /// Whether a ray's set is all it tries, in a scene of `count` objects.
     fn alone(self, count: usize) -> bool;
+
+    /// Of the bits with spans, those whose spans hold column `col`, and the first column past
+    /// it where a span starts or ends ([`RunEnds::at`]); `None` where the ends are not kept
+    /// and the spans are to be taken one by one.
+    fn ends_at(self, col: i16) -> Option<(u64, i16)>;
 }
 
 /// Bit `i` is object `i`; objects past the 64th have none, and every ray tries them.
@@ -87,6 +104,10 @@ impl Names for ByIndex {
     fn alone(self, count: usize) -> bool {
         count <= 64
     }
+
+    fn ends_at(self, _col: i16) -> Option<(u64, i16)> {
+        None
+    }
 }
 
 impl<const N: usize> Names for &Crowd<N> {
@@ -102,5 +123,9 @@ impl<const N: usize> Names for &Crowd<N> {
 
     fn alone(self, _count: usize) -> bool {
         Crowd::extras(self).is_empty()
+    }
+
+    fn ends_at(self, col: i16) -> Option<(u64, i16)> {
+        Some(self.ends.at(col))
     }
 }

@@ -343,7 +343,7 @@ mod tests {
                 continue;
             };
             for row in 0..camera.rows() {
-                let mut crowd = Crowd::EMPTY;
+                let mut crowd = Crowd::empty();
                 let runs = Runs::crowded(&scene, &camera, row, &mut crowd);
                 let floor = Floor::of_row(&scene, &camera, row, runs.eye());
                 if floor.plane != Some(0) {

@@ -261,6 +261,11 @@ impl<const N: usize, C: Names> Eye<N, C> {
         self.names.extras()
     }
 
+    /// [`Names::ends_at`] of what the bits stand for.
+    pub(crate) fn ends_at(&self, col: i16) -> Option<(u64, i16)> {
+        self.names.ends_at(col)
+    }
+
     /// Plane `index`'s numerator of Eq. 4.2 for rays from the eye (0 for anything else).
     pub(crate) fn numerator(&self, index: usize) -> &Numerator {
         self.numerators.get(index).unwrap_or(&Numerator::NONE)

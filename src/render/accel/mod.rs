@@ -8,6 +8,7 @@
 //! - `row_rays`: a row's rays by exact column steps, their squared lengths carried along;
 //! - `runs`: a row cut into runs of columns that can meet the same objects (culling by the
 //!   row's plane, each sphere's column span, and planes every ray of a run points away from);
+//! - `run_ends`: a crowded row's span ends sorted by column, which its runs are found from;
 //! - `shadow_rows`: the spheres that can shadow a row's hits on planes, from each light;
 //! - `shadow_columns`: the columns of a run on a plane that a sphere can shadow;
 //! - `matte`: a run that can meet one matte plane only, on a row parallel to it, found by
@@ -30,6 +31,7 @@ pub(crate) mod crowd_floor;
 pub(crate) mod cull;
 pub(crate) mod matte;
 pub(crate) mod row_rays;
+pub(crate) mod run_ends;
 pub(crate) mod runs;
 pub(crate) mod shade;
 pub(crate) mod shadow_caches;

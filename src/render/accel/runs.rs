@@ -158,6 +158,7 @@ impl<'a, const N: usize, const L: usize> Runs<'a, N, L> {
             }
             bit += 1;
         }
+        crowd.sort_ends(bounded, &spans);
         let shadowers = match row_normal {
             Some(row_normal) => row_shadowers(scene, eye, row_normal, plane_objects),
             None => [!0; L],
@@ -227,7 +228,17 @@ impl<'a, const N: usize, const L: usize, C: Names> Runs<'a, N, L, C> {
         }
         let col = self.col as i16;
         let (mut here, mut until) = (self.among, self.cols as i16);
-        let mut rest = self.bounded;
+        // A crowded row keeps its spans' ends sorted: the same set and end from the ends the
+        // walk passes, not from every span.
+        let ends = self.eye.ends_at(col);
+        let mut rest = match ends {
+            Some((inside, next)) => {
+                here &= inside | !self.bounded;
+                until = until.min(next);
+                0
+            }
+            None => self.bounded,
+        };
         while rest != 0 {
             let index = rest.trailing_zeros();
             rest &= rest - 1;
@@ -322,7 +333,7 @@ mod tests {
             .size(crate::Size::new(96, 31))
             .build()
             .unwrap();
-        let mut crowd = Crowd::EMPTY;
+        let mut crowd = Crowd::empty();
         let runs = Runs::crowded(&scene, &camera, 15, &mut crowd);
         assert_eq!(runs.eye().extras().len(), 101 - 64);
         let mut out = [Rgb::BLACK; 96];
