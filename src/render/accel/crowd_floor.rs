@@ -23,7 +23,7 @@ use crate::numbers::fx::{self, Fx};
 use crate::numbers::vec3::Vec3;
 use crate::render::accel::crowd::Names;
 use crate::render::accel::cull::Eye;
-use crate::render::accel::matte::{MatteRun, Walk};
+use crate::render::accel::matte::{Axis, MatteRun, Walk};
 use crate::render::accel::shade::blocks;
 use crate::render::accel::shadow_columns::RunLine;
 use crate::render::accel::shadow_rows::{Pencil, sin_between};
@@ -112,14 +112,9 @@ impl<const N: usize, const L: usize> Floor<N, L> {
                 return None;
             };
             let normal = plane.normal();
-            let along_axis = [normal.x, normal.y, normal.z]
-                .iter()
-                .filter(|c| **c == Fx::ZERO)
-                .count()
-                == 2;
             let usable = object.material.is_plain_matte()
                 && plane.bounds().is_none()
-                && along_axis
+                && Axis::of(normal).is_some()
                 && normal.dot_wide_exact(step) == 0;
             usable.then_some((index, plane))
         });

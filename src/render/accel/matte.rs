@@ -312,14 +312,15 @@ impl Walk {
 /// component, rounded as [`Vec3::dot_exact`] rounds it (exactly), so where no shadow ray needs
 /// the light's whole unit vector, the cosine needs one component of it.
 #[derive(Clone, Copy)]
-struct Axis {
+pub(crate) struct Axis {
     /// 0, 1 or 2 for x, y or z.
     index: u8,
     negative: bool,
 }
 
 impl Axis {
-    fn of(normal: Vec3) -> Option<Axis> {
+    /// The axis a unit normal lies along, or `None` where it lies along none.
+    pub(crate) fn of(normal: Vec3) -> Option<Axis> {
         let one = Fx::ONE.to_bits().unsigned_abs();
         let c = [normal.x, normal.y, normal.z].map(Fx::to_bits);
         let index = match c {
