@@ -119,6 +119,15 @@ fn scenes_past_64_objects_equal_their_pixels_traced_one_by_one() {
         one_thirty.set_shadows(shadows);
         rows_match_tracing_each_pixel(&seventy, &camera);
         rows_match_tracing_each_pixel(&one_thirty, &camera);
+        // A whole frame, whose rows share what they find of the spheres' shadowers.
+        let mut frame = Box::new(fixray::Framebuffer::<96, 72>::new());
+        fixray::render(&one_thirty, &camera, &mut frame).unwrap();
+        for (row, pixels) in (0..).zip(frame.rows()) {
+            for (col, pixel) in (0..).zip(pixels) {
+                let traced = one_thirty.trace(&camera.ray(col, row));
+                assert_eq!(*pixel, traced, "frame row {row}, column {col}");
+            }
+        }
     }
     // The objects past the 64th are really in view.
     let seen = |scene: &fixray::Scene<130>| {

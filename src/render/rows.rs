@@ -10,6 +10,7 @@ use crate::geometry::shape::Shape;
 use crate::numbers::vec3::Vec3;
 use crate::render::accel::crowd::{Crowd, Names};
 use crate::render::accel::crowd_floor::{Floor, Floors};
+use crate::render::accel::crowd_spheres::{Pixels, SphereShadowers};
 use crate::render::accel::matte::MatteRun;
 use crate::render::accel::row_rays::RowRays;
 use crate::render::accel::runs::Runs;
@@ -80,17 +81,18 @@ fn paint_run<const N: usize, const L: usize>(
     }
 }
 
-/// Shades the pixel [`cast_row`] hands over for `out[col]`.
+/// Shades the pixel [`cast_row`] hands over for `out[col]`, display column `column`, by
+/// `pixels`.
 fn paint_pixel<const N: usize, const L: usize>(
-    scene: &Scene<N, L>,
+    (scene, pixels): (&Scene<N, L>, &mut impl Pixels<N, L>),
     out: &mut [Rgb],
-    col: u16,
+    (col, column): (u16, u16),
     ray: &Ray,
     hit: Option<SceneHit>,
     shadowers: &[u32; L],
 ) {
     if let Some(out) = out.get_mut(col as usize) {
-        *out = scene.pixel_among(ray, hit, shadowers);
+        *out = pixels.pixel(scene, (ray, column), hit, shadowers);
     }
 }
 
@@ -122,24 +124,39 @@ pub(crate) fn render_every<const N: usize, const L: usize>(
     out: &mut [Rgb],
 ) {
     if N > 64 {
-        let mut crowd = Crowd::empty();
-        let mut runs = Runs::crowded(scene, camera, row, &mut crowd);
-        let floor = Floor::of_row(scene, camera, row, runs.eye());
-        return walk_every(scene, camera, row, walks, out, &mut runs, &floor);
+        return crowded_every(scene, camera, row, walks, out, &mut SphereShadowers::new());
     }
+    let runs = &mut Runs::new(scene, camera, row);
+    walk_every(scene, camera, row, walks, out, runs, ((), &mut ()));
+}
+
+/// [`render_every`] for a scene whose capacity passes 64: its row's objects kept as a
+/// [`Crowd`], its floor's casters found for the row, and its spheres' shadowers kept in
+/// `spheres`, which the frame's rows share.
+fn crowded_every<const N: usize, const L: usize>(
+    scene: &Scene<N, L>,
+    camera: &Camera,
+    row: u16,
+    walks: &[(Range<u16>, u32)],
+    out: &mut [Rgb],
+    spheres: &mut SphereShadowers<L>,
+) {
+    let mut crowd = Crowd::empty();
+    let mut runs = Runs::crowded(scene, camera, row, &mut crowd);
+    let floor = Floor::of_row(scene, camera, row, runs.eye());
     walk_every(
         scene,
         camera,
         row,
         walks,
         out,
-        &mut Runs::new(scene, camera, row),
-        (),
+        &mut runs,
+        (&floor, &mut (&floor, spheres)),
     );
 }
 
 /// [`render_every`] along the runs `runs` of display row `row`, its matte runs shaded by
-/// `floor` where it shades them.
+/// `floor` where it shades them, and its other pixels by `pixels`.
 fn walk_every<const N: usize, const L: usize, C: Names>(
     scene: &Scene<N, L>,
     camera: &Camera,
@@ -147,7 +164,7 @@ fn walk_every<const N: usize, const L: usize, C: Names>(
     walks: &[(Range<u16>, u32)],
     out: &mut [Rgb],
     runs: &mut Runs<'_, N, L, C>,
-    floor: impl Floors<N, L>,
+    (floor, pixels): (impl Floors<N, L>, &mut impl Pixels<N, L>),
 ) {
     // Where nothing can be hit the sky needs no rays: a plain one is its colour, a gradient
     // reads one component of each ray's direction.
@@ -178,7 +195,10 @@ fn walk_every<const N: usize, const L: usize, C: Names>(
                 let place = (start + (first << shift), stride);
                 paint_run(at, place, out, first..end, run, shadowers, sky, floor);
             },
-            |out, col, ray, hit, shadowers| paint_pixel(scene, out, col, ray, hit, shadowers),
+            |out, col, ray, hit, shadowers| {
+                let column = start + (col << shift);
+                paint_pixel((scene, pixels), out, (col, column), ray, hit, shadowers)
+            },
         );
     }
 }
@@ -459,6 +479,22 @@ pub fn render<const N: usize, const L: usize, const W: usize, const H: usize>(
     frame: &mut Framebuffer<W, H>,
 ) -> Result<(), Error> {
     check_size::<W, H>(camera)?;
+    if N > 64 {
+        // The rows share what they find of the spheres' shadowers.
+        let spheres = &mut SphereShadowers::new();
+        for (y, pixels) in (0..).zip(frame.rows_mut().iter_mut()) {
+            let row = check_row(camera, y, pixels)?;
+            crowded_every(
+                scene,
+                camera,
+                row,
+                &[(0..camera.cols(), 0)],
+                pixels,
+                spheres,
+            );
+        }
+        return Ok(());
+    }
     for (y, pixels) in (0..).zip(frame.rows_mut().iter_mut()) {
         render_row(scene, camera, y, pixels)?;
     }

@@ -29,6 +29,7 @@ use crate::render::accel::shadow_columns::RunLine;
 use crate::render::accel::shadow_rows::{Pencil, sin_between};
 use crate::render::camera::Camera;
 use crate::render::trace::{Surface, TowardsLight};
+use crate::scene::hit::SceneHit;
 use crate::scene::{Rgb, Scene};
 
 /// An object that may shadow the row's columns `first..end` on the floor from a light.
@@ -178,6 +179,28 @@ impl<const N: usize, const L: usize> Floor<N, L> {
         }
         floor.plane = Some(index);
         floor
+    }
+
+    /// The pixel whose first hit `hit` is on the floor at display column `column`, as
+    /// [`Scene::pixel_among`] shades it, its shadow rays trying the casters; `None` for a hit
+    /// elsewhere.
+    pub(crate) fn pixel(&self, scene: &Scene<N, L>, hit: &SceneHit, column: usize) -> Option<Rgb> {
+        let object = scene.objects().get(hit.object)?;
+        if self.plane != Some(hit.object) {
+            return None;
+        }
+        let at = Surface::of(hit);
+        let mut diffuse = Fx::ZERO;
+        for (i, light) in scene.lights().iter().enumerate() {
+            let Some(towards) = scene.towards_light(light, &at) else {
+                continue;
+            };
+            if !self.blocked(scene, i, column, &at, &towards) {
+                diffuse = diffuse.saturating_add(fx::mul_unit(light.intensity, towards.cos));
+            }
+        }
+        let colour = object.colour_at(at.point);
+        Some(scene.matte_pixel_within_one(&object.material, diffuse, colour))
     }
 
     /// Whether a shadow ray from the floor at `at`, display column `column`, `towards` light

@@ -5,6 +5,8 @@
 //! - `crowd`: a row's objects named by its 64 bits, in scenes that may hold more;
 //! - `crowd_floor`: in such scenes, past 32 objects, the objects that may shadow each column
 //!   of a row's floor from each light, for its shadow rays to try;
+//! - `crowd_spheres`: in such scenes, the objects that may shadow the sphere a row's pixels
+//!   last met, from each light, for its shadow rays to try;
 //! - `row_rays`: a row's rays by exact column steps, their squared lengths carried along;
 //! - `runs`: a row cut into runs of columns that can meet the same objects (culling by the
 //!   row's plane, each sphere's column span, and planes every ray of a run points away from);
@@ -28,6 +30,7 @@
 pub(crate) mod camera_rows;
 pub(crate) mod crowd;
 pub(crate) mod crowd_floor;
+pub(crate) mod crowd_spheres;
 pub(crate) mod cull;
 pub(crate) mod matte;
 pub(crate) mod row_rays;

@@ -72,6 +72,12 @@ impl ShadowCone {
         }
     }
 
+    /// Whether every point at most `√distance_squared` from the light lies nearer than the
+    /// sphere's near side, so that no shadow ray from it can meet the sphere.
+    pub(crate) fn starts_past(&self, distance_squared: u64) -> bool {
+        self.cos != i16::MIN && distance_squared <= self.near_squared
+    }
+
     /// Whether a shadow ray along the unit `dir` (towards the light), from a point
     /// `√distance_squared` from the light, may meet the sphere.
     pub(crate) fn may_block(&self, dir: Vec3, distance_squared: u64) -> bool {
@@ -86,6 +92,34 @@ impl ShadowCone {
         let c = |d: Fx, a: i16| (d.to_bits() >> 2) * a as i32;
         let dot = c(dir.x, self.axis[0]) + c(dir.y, self.axis[1]) + c(dir.z, self.axis[2]);
         -dot >= (self.cos as i32) << 14
+    }
+
+    /// [`ShadowCone::may_block`] with its three tests all taken, none skipping the others:
+    /// for a loop over many cones, whose answers no branch could foresee.
+    pub(crate) fn may_block_all_tested(&self, dir: Vec3, distance_squared: u64) -> bool {
+        let c = |d: Fx, a: i16| (d.to_bits() >> 2) * a as i32;
+        let dot = c(dir.x, self.axis[0]) + c(dir.y, self.axis[1]) + c(dir.z, self.axis[2]);
+        let within = -dot >= (self.cos as i32) << 14;
+        (self.cos == i16::MIN) | ((distance_squared > self.near_squared) & within)
+    }
+
+    /// Whether some shadow ray may meet the sphere whose direction seen from the light, `−dir`,
+    /// has components that [`ShadowCone::may_block`] forms (`−(dir_k >> 2)`, Q2.14) within
+    /// `bounds[k]`: whether `−dir·axis` can reach `cos` there. A linear form's largest value
+    /// over a box is at a corner, each component at the end its axis's sign picks; directions
+    /// are unit vectors, which only lowers it. Exact, in 64 bits.
+    pub(crate) fn may_block_within(&self, bounds: [(i32, i32); 3]) -> bool {
+        if self.cos == i16::MIN {
+            return true;
+        }
+        let largest = |(low, high): (i32, i32), a: i16| {
+            let a = i64::from(a);
+            (i64::from(low) * a).max(i64::from(high) * a)
+        };
+        let most = largest(bounds[0], self.axis[0])
+            + largest(bounds[1], self.axis[1])
+            + largest(bounds[2], self.axis[2]);
+        most >= i64::from(self.cos) << 14
     }
 }
 
@@ -121,5 +155,50 @@ mod tests {
         // A point between the light and the ball cannot be shadowed by it.
         let (dir, d2) = towards_light(Vec3::from_ints(0, 80, 0));
         assert!(!cone.may_block(dir, d2));
+    }
+
+    /// Random spheres seen from random lights, random unit directions from random points:
+    /// the cone's test taken whole answers as the one that skips, and a box of directions
+    /// around each direction is refused only where the direction's own test refuses it.
+    #[test]
+    fn all_tested_and_within_a_box_agree_with_the_cone_test() {
+        let mut rng = crate::xorshift::XorShift(0x5eed_c0e5_0000_0002);
+        let (mut held, mut tried) = (0, 0);
+        for _ in 0..20_000 {
+            let v = |rng: &mut crate::xorshift::XorShift, r: f32| {
+                Vec3::new(
+                    Fx::from_num(rng.signed(r)),
+                    Fx::from_num(rng.signed(r)),
+                    Fx::from_num(rng.signed(r)),
+                )
+            };
+            let light = v(&mut rng, 30.0);
+            let radius = Fx::from_num(0.05 + rng.signed(4.0).abs());
+            let ball = Sphere::from_fx(v(&mut rng, 30.0), radius).unwrap();
+            let cone = ShadowCone::new(light, &Shape::Sphere(ball));
+            // Points near the sphere's shadow, and anywhere.
+            let from = match rng.next() % 2 {
+                0 => ball.centre() + (ball.centre() - light).scale(Fx::from_num(0.5)),
+                _ => v(&mut rng, 30.0),
+            } + v(&mut rng, 2.0);
+            let to_light = light - from;
+            let d2 = to_light.length_squared_wide();
+            let Some(dir) = to_light.normalize_with_square(d2) else {
+                continue;
+            };
+            let blocks = cone.may_block(dir, d2);
+            assert_eq!(cone.may_block_all_tested(dir, d2), blocks);
+            // A box of the components the test forms, `−(dir_k >> 2)`, around them.
+            let widen = (rng.next() % 200) as i32;
+            let c = |d: Fx| -(d.to_bits() >> 2);
+            let around = |d: Fx| (c(d) - widen, c(d) + widen);
+            let bounds = [around(dir.x), around(dir.y), around(dir.z)];
+            if cone.may_block(dir, u64::MAX) {
+                assert!(cone.may_block_within(bounds));
+            }
+            held += u64::from(blocks);
+            tried += 1;
+        }
+        assert!(held * 50 > tried && held * 2 < tried, "{held} of {tried}");
     }
 }

@@ -270,7 +270,53 @@ const fn sift_down(values: &mut [u32], (lo, mut root, end): (usize, usize, usize
 /// Whether `tries(index)` holds for some object a shadow ray along the unit `dir` (towards
 /// the light) may meet, by a light's sweep `sweep` (the scene's objects, sorted): those whose
 /// cone bounds nothing, then the bounded ones whose interval may hold the ray's step.
-pub(crate) fn any(sweep: &[u32], dir: Vec3, mut tries: impl FnMut(usize) -> bool) -> bool {
+pub(crate) fn any(sweep: &[u32], dir: Vec3, tries: impl FnMut(usize) -> bool) -> bool {
+    // Seen from the light the ray leaves along −dir; in Q2.14, rounded down, along each axis.
+    let key_of = |c: crate::numbers::fx::Fx| step_of(-(c.to_bits() >> 2));
+    let keys = [key_of(dir.x), key_of(dir.y), key_of(dir.z), 0];
+    any_within(sweep, (keys, keys), tries)
+}
+
+/// The steps, along each axis, of the directions in which every shadow ray from a point of a
+/// sphere `shape` leaves a light at `light`: the interval [`span`] bounds for a ray that passes
+/// within `ρ` of the centre, which a ray from a point of the sphere does (`ρ` exceeds the
+/// radius by 2⁻⁸ and more, and a hit lies within a few units of 2⁻¹⁶ of the surface). `None`
+/// for a plane, or a sphere whose cone bounds nothing.
+pub(crate) fn steps_from(light: Vec3, shape: &Shape) -> Option<Keys> {
+    let bounded = bound(light, shape)?;
+    let (mut low, mut high) = ([0; 4], [0; 4]);
+    for axis in 0..3 {
+        (low[axis], high[axis]) = steps_of(span(bounded, axis));
+    }
+    Some((low, high))
+}
+
+/// The lowest and highest steps of some directions along each axis (the fourth unused).
+pub(crate) type Keys = ([u32; 4], [u32; 4]);
+
+/// The components `−(dir_k >> 2)` (Q2.14) that a shadow ray along the unit `dir` whose steps
+/// [`any`] finds within `(low, high)` can have along each axis: a step `s` holds those from
+/// `64·s − 2¹⁴` to 63 past it, and the ends hold the little past ±1 that a rounded unit
+/// vector's components reach (4 covers it).
+pub(crate) fn components_within((low, high): Keys) -> [(i32, i32); 3] {
+    let start = |step: u32| (step as i32) * 64 - (1 << 14) - 4;
+    let end = |step: u32| (step as i32) * 64 - (1 << 14) + 63 + 4;
+    [
+        (start(low[0]), end(high[0])),
+        (start(low[1]), end(high[1])),
+        (start(low[2]), end(high[2])),
+    ]
+}
+
+/// Whether `tries(index)` holds for some object that a shadow ray leaving the light along a
+/// direction whose steps lie within `(low, high)` may meet, by a light's sweep `sweep`: those
+/// whose cone bounds nothing, then the bounded ones whose intervals may meet those steps
+/// along the tree's axes.
+pub(crate) fn any_within(
+    sweep: &[u32],
+    (low, high): Keys,
+    mut tries: impl FnMut(usize) -> bool,
+) -> bool {
     // The entries whose cones bound nothing, first, each tried as it is found: a scan, not a
     // search, as there are few (the planes, most often) or else every object is tried anyway.
     let mut bounded = 0;
@@ -284,9 +330,6 @@ pub(crate) fn any(sweep: &[u32], dir: Vec3, mut tries: impl FnMut(usize) -> bool
         bounded += 1;
     }
     let tree = sweep.get(bounded..).unwrap_or(&[]);
-    // Seen from the light the ray leaves along −dir; in Q2.14, rounded down, along each axis.
-    let key_of = |c: crate::numbers::fx::Fx| step_of(-(c.to_bits() >> 2));
-    let keys = [key_of(dir.x), key_of(dir.y), key_of(dir.z), 0];
     // The ranges still to walk: a tree of at most 2¹¹ entries is 12 levels deep, and each
     // range taken leaves at most one more waiting than it found.
     let mut ranges = [(0u16, 0u16); 16];
@@ -296,11 +339,11 @@ pub(crate) fn any(sweep: &[u32], dir: Vec3, mut tries: impl FnMut(usize) -> bool
         let next = if lo < hi {
             let mid = lo + (hi - lo) / 2;
             let entry = tree.get(mid).copied().unwrap_or(0);
-            let key = keys[((entry >> AXIS_SHIFT) & 3) as usize];
-            if (entry >> END_SHIFT) & KEY_MASK < key {
+            let axis = ((entry >> AXIS_SHIFT) & 3) as usize;
+            if (entry >> END_SHIFT) & KEY_MASK < low[axis] {
                 None
-            } else if (entry >> START_SHIFT) & KEY_MASK > key {
-                // Every entry right of this one starts past the key too.
+            } else if (entry >> START_SHIFT) & KEY_MASK > high[axis] {
+                // Every entry right of this one starts past the steps too.
                 Some(lo as u16..mid as u16)
             } else {
                 if tries(index_of(entry)) {
