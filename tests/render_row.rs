@@ -17,6 +17,21 @@ fn rows_match_tracing_each_pixel<const N: usize, const L: usize>(
     }
 }
 
+/// [`fixray::render`]'s frame of 96 × 72 pixels against the plain path's, pixel by pixel.
+fn frame_matches_tracing_each_pixel<const N: usize>(
+    scene: &fixray::Scene<N>,
+    camera: &fixray::Camera,
+) {
+    let mut frame = Box::new(fixray::Framebuffer::<96, 72>::new());
+    fixray::render(scene, camera, &mut frame).unwrap();
+    for (row, pixels) in (0..).zip(frame.rows()) {
+        for (col, pixel) in (0..).zip(pixels) {
+            let traced = scene.trace(&camera.ray(col, row));
+            assert_eq!(*pixel, traced, "frame row {row}, column {col}");
+        }
+    }
+}
+
 /// A scene with and without shadows, through a camera at two sizes.
 fn rows_match_with_and_without_shadows(
     mut scene: fixray::Scene<8>,
@@ -56,9 +71,10 @@ fn orbiting_views_equal_their_pixels_traced_one_by_one() {
     }
 }
 
-/// A scene of `N` objects whose last ones, past the 64th, are in view, cast shadows on one
-/// another and on the ground, and one of which is a mirror: the culling's 64-bit masks have no
-/// bit of their own for them.
+/// A scene of `N` objects, 64 or more, whose first 64 are a floor and a grid of small spheres
+/// on it, and whose last ones, past the 64th, are in view, cast shadows on one another and on
+/// the ground, and one of which is a mirror: the culling's 64-bit masks have no bit of their
+/// own for them.
 fn crowded<const N: usize>() -> fixray::Scene<N> {
     use fixray::{Fx, Light, Material, Plane, Sphere, Vec3};
     let light = Light::from_fx(Vec3::from_ints(-10, 20, 10), Fx::from_num(0.8)).unwrap();
@@ -91,7 +107,9 @@ fn crowded<const N: usize>() -> fixray::Scene<N> {
     )
     .unwrap();
     // Past the 64th: a large mirror in the middle, and more spheres around and above it.
-    scene.add_sphere(ball(0, 0, -16, 3.5), mirror).unwrap();
+    if scene.objects().len() < N {
+        scene.add_sphere(ball(0, 0, -16, 3.5), mirror).unwrap();
+    }
     let mut k = 0i16;
     while scene.objects().len() < N {
         let (x, y) = (-9 + 3 * (k % 7), 5 + 2 * (k / 7 % 4));
@@ -107,27 +125,24 @@ fn crowded<const N: usize>() -> fixray::Scene<N> {
 }
 
 #[test]
-fn scenes_past_64_objects_equal_their_pixels_traced_one_by_one() {
+fn scenes_of_64_objects_and_more_equal_their_pixels_traced_one_by_one() {
     let camera = fixray::Camera::look_at([0.0, 3.0, 6.0], [0.0, -1.0, -16.0])
         .size(Size::new(96, 72))
         .build()
         .unwrap();
+    let mut sixty_four = crowded::<64>();
     let mut seventy = crowded::<70>();
     let mut one_thirty = crowded::<130>();
     for shadows in [true, false] {
+        sixty_four.set_shadows(shadows);
         seventy.set_shadows(shadows);
         one_thirty.set_shadows(shadows);
+        rows_match_tracing_each_pixel(&sixty_four, &camera);
         rows_match_tracing_each_pixel(&seventy, &camera);
         rows_match_tracing_each_pixel(&one_thirty, &camera);
-        // A whole frame, whose rows share what they find of the spheres' shadowers.
-        let mut frame = Box::new(fixray::Framebuffer::<96, 72>::new());
-        fixray::render(&one_thirty, &camera, &mut frame).unwrap();
-        for (row, pixels) in (0..).zip(frame.rows()) {
-            for (col, pixel) in (0..).zip(pixels) {
-                let traced = one_thirty.trace(&camera.ray(col, row));
-                assert_eq!(*pixel, traced, "frame row {row}, column {col}");
-            }
-        }
+        // Whole frames, whose rows share what they find of the spheres' shadowers.
+        frame_matches_tracing_each_pixel(&sixty_four, &camera);
+        frame_matches_tracing_each_pixel(&one_thirty, &camera);
     }
     // The objects past the 64th are really in view.
     let seen = |scene: &fixray::Scene<130>| {

@@ -123,16 +123,16 @@ pub(crate) fn render_every<const N: usize, const L: usize>(
     walks: &[(Range<u16>, u32)],
     out: &mut [Rgb],
 ) {
-    if N > 64 {
+    if N > 32 {
         return crowded_every(scene, camera, row, walks, out, &mut SphereShadowers::new());
     }
     let runs = &mut Runs::new(scene, camera, row);
     walk_every(scene, camera, row, walks, out, runs, ((), &mut ()));
 }
 
-/// [`render_every`] for a scene whose capacity passes 64: its row's objects kept as a
-/// [`Crowd`], its floor's casters found for the row, and its spheres' shadowers kept in
-/// `spheres`, which the frame's rows share.
+/// [`render_every`] for a scene whose capacity passes 32, where the shadow sets no longer name
+/// every object: its floor's casters found for the row, its spheres' shadowers kept in
+/// `spheres`, which a frame's rows share, and past 64 its row's objects kept as a [`Crowd`].
 fn crowded_every<const N: usize, const L: usize>(
     scene: &Scene<N, L>,
     camera: &Camera,
@@ -141,8 +141,21 @@ fn crowded_every<const N: usize, const L: usize>(
     out: &mut [Rgb],
     spheres: &mut SphereShadowers<L>,
 ) {
-    let mut crowd = Crowd::empty();
-    let mut runs = Runs::crowded(scene, camera, row, &mut crowd);
+    if N > 64 {
+        let mut crowd = Crowd::empty();
+        let mut runs = Runs::crowded(scene, camera, row, &mut crowd);
+        let floor = Floor::of_row(scene, camera, row, runs.eye());
+        return walk_every(
+            scene,
+            camera,
+            row,
+            walks,
+            out,
+            &mut runs,
+            (&floor, &mut (&floor, spheres)),
+        );
+    }
+    let mut runs = Runs::new(scene, camera, row);
     let floor = Floor::of_row(scene, camera, row, runs.eye());
     walk_every(
         scene,
@@ -479,7 +492,7 @@ pub fn render<const N: usize, const L: usize, const W: usize, const H: usize>(
     frame: &mut Framebuffer<W, H>,
 ) -> Result<(), Error> {
     check_size::<W, H>(camera)?;
-    if N > 64 {
+    if N > 32 {
         // The rows share what they find of the spheres' shadowers.
         let spheres = &mut SphereShadowers::new();
         for (y, pixels) in (0..).zip(frame.rows_mut().iter_mut()) {

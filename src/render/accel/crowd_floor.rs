@@ -1,4 +1,4 @@
-//! [`Floor`]: in a scene of more than 64 objects, a display row's casters on its floor — for
+//! [`Floor`]: in a scene of more than 32 objects, a display row's casters on its floor — for
 //! each light, the objects that may shadow some column of the row's hits on one matte plane,
 //! with those columns — so that a shadow ray from the floor tries only the few whose columns
 //! hold its own, not the light's whole sweep (`accel/shadow_sweep.rs`).
@@ -14,7 +14,7 @@
 //! test as [`Scene::occluded_among`]: every object that can block the ray is among them, so
 //! the pixel is bit for bit the plain path's.
 //!
-//! Only scenes whose capacity passes 64 make one (`render_every`); the others' matte runs
+//! Only scenes whose capacity passes 32 make one (`render_every`); the others' matte runs
 //! are shaded as before, through `()`, which shades none.
 
 use crate::geometry::plane::far_reach;

@@ -1,8 +1,8 @@
-//! A crowded row's pixels that no run shades: in a scene of more than 64 objects, past 32,
-//! where the shadow sets no longer name objects, a pixel on a sphere sends its shadow rays to
-//! the few objects that may shadow that sphere from each light ([`SphereShadowers`]), and a
-//! pixel on the row's floor to the floor's casters of its column (`crowd_floor`), instead of
-//! each walking the light's sweep (`accel/shadow_sweep.rs`).
+//! A crowded row's pixels that no run shades: in a scene of more than 32 objects, where the shadow
+//! sets no longer name objects, a pixel on a sphere sends its shadow rays to the few objects that
+//! may shadow that sphere from each light ([`SphereShadowers`]), and a pixel on the row's floor to
+//! the floor's casters of its column (`crowd_floor`), instead of each walking the light's sweep
+//! (`accel/shadow_sweep.rs`).
 //!
 //! A shadow ray from a point of a sphere passes within `ρ` of its centre (the point itself
 //! does), so seen from the light it leaves along a direction whose steps lie within the
@@ -19,7 +19,7 @@
 //! A frame's rows share the objects found ([`render`](crate::render)), [`SLOTS`] spheres' at
 //! a time, each in the slot its index picks (about 10 KB for two lights); a row drawn alone
 //! finds its own. Past [`KEPT`] objects for a light, or for a sphere whose cone bounds
-//! nothing, the rays walk the sweep as before. Only scenes whose capacity passes 64 make them
+//! nothing, the rays walk the sweep as before. Only scenes whose capacity passes 32 make them
 //! (`render_every`); the others' pixels are shaded through `()`, as before.
 
 use crate::geometry::ray::Ray;

@@ -3,9 +3,9 @@
 //! - `camera_rows`: what the row walk asks of the camera (a row's first direction and column
 //!   step, the plane of a row's rays, a sphere's span of columns);
 //! - `crowd`: a row's objects named by its 64 bits, in scenes that may hold more;
-//! - `crowd_floor`: in such scenes, past 32 objects, the objects that may shadow each column
+//! - `crowd_floor`: in scenes of more than 32 objects, the objects that may shadow each column
 //!   of a row's floor from each light, for its shadow rays to try;
-//! - `crowd_spheres`: in such scenes, the objects that may shadow the sphere a row's pixels
+//! - `crowd_spheres`: in those, the objects that may shadow the sphere a row's pixels
 //!   last met, from each light, for its shadow rays to try;
 //! - `row_rays`: a row's rays by exact column steps, their squared lengths carried along;
 //! - `runs`: a row cut into runs of columns that can meet the same objects (culling by the
