@@ -10,7 +10,7 @@ use crate::geometry::shape::Shape;
 use crate::numbers::vec3::Vec3;
 use crate::render::accel::crowd::{Crowd, Names};
 use crate::render::accel::crowd_floor::{Floor, Floors};
-use crate::render::accel::crowd_spheres::{Pixels, SphereShadowers};
+use crate::render::accel::crowd_spheres::{FRAME_SLOTS, Pixels, ROW_SLOTS, SphereShadowers};
 use crate::render::accel::matte::MatteRun;
 use crate::render::accel::row_rays::RowRays;
 use crate::render::accel::runs::Runs;
@@ -124,7 +124,8 @@ pub(crate) fn render_every<const N: usize, const L: usize>(
     out: &mut [Rgb],
 ) {
     if N > 32 {
-        return crowded_every(scene, camera, row, walks, out, &mut SphereShadowers::new());
+        let spheres = &mut SphereShadowers::<L, ROW_SLOTS>::new();
+        return crowded_every(scene, camera, row, walks, out, spheres);
     }
     let runs = &mut Runs::new(scene, camera, row);
     walk_every(scene, camera, row, walks, out, runs, ((), &mut ()));
@@ -133,13 +134,13 @@ pub(crate) fn render_every<const N: usize, const L: usize>(
 /// [`render_every`] for a scene whose capacity passes 32, where the shadow sets no longer name
 /// every object: its floor's casters found for the row, its spheres' shadowers kept in
 /// `spheres`, which a frame's rows share, and past 64 its row's objects kept as a [`Crowd`].
-fn crowded_every<const N: usize, const L: usize>(
+fn crowded_every<const N: usize, const L: usize, const S: usize>(
     scene: &Scene<N, L>,
     camera: &Camera,
     row: u16,
     walks: &[(Range<u16>, u32)],
     out: &mut [Rgb],
-    spheres: &mut SphereShadowers<L>,
+    spheres: &mut SphereShadowers<L, S>,
 ) {
     if N > 64 {
         let mut crowd = Crowd::empty();
@@ -494,7 +495,7 @@ pub fn render<const N: usize, const L: usize, const W: usize, const H: usize>(
     check_size::<W, H>(camera)?;
     if N > 32 {
         // The rows share what they find of the spheres' shadowers.
-        let spheres = &mut SphereShadowers::new();
+        let spheres = &mut SphereShadowers::<L, FRAME_SLOTS>::new();
         for (y, pixels) in (0..).zip(frame.rows_mut().iter_mut()) {
             let row = check_row(camera, y, pixels)?;
             crowded_every(

@@ -16,9 +16,9 @@
 //! the same cone and test as [`Scene::occluded_among`]: every object that can block it is
 //! among them, so the pixel is bit for bit the plain path's.
 //!
-//! A frame's rows share the objects found ([`render`](crate::render)), [`SLOTS`] spheres' at
-//! a time, each in the slot its index picks (about 10 KB for two lights); a row drawn alone
-//! finds its own. Past [`KEPT`] objects for a light, or for a sphere whose cone bounds
+//! A frame's rows share the objects found ([`render`](crate::render)), [`FRAME_SLOTS`]
+//! spheres' at a time, each in the slot its index picks (about 9 KB for two lights); a row
+//! drawn alone finds its own, in [`ROW_SLOTS`] (about 1 KB). Past [`KEPT`] objects for a light, or for a sphere whose cone bounds
 //! nothing, the rays walk the sweep as before. Only scenes whose capacity passes 32 make them
 //! (`render_every`); the others' pixels are shaded through `()`, as before.
 
@@ -36,7 +36,7 @@ use crate::scene::light::Light;
 use crate::scene::linear::rgb_of;
 use crate::scene::{Rgb, Scene};
 
-/// The most objects kept for a sphere and a light: at most 64, a mask's bits.
+/// The most objects kept for a sphere and a light: at most 64, a mask's bits (and a `u8`).
 const KEPT: usize = 32;
 
 /// What shades a row's pixels that no run shades: a crowd's [`SphereShadowers`], or `()`,
@@ -66,14 +66,18 @@ impl<const N: usize, const L: usize> Pixels<N, L> for () {
 }
 
 /// The objects that may shadow the spheres a frame's pixels met last, for each light (see the
-/// module's notes): [`SLOTS`] spheres', each in the slot its index picks.
-pub(crate) struct SphereShadowers<const L: usize> {
-    slots: [Slot<L>; SLOTS],
+/// module's notes): `S` spheres', each in the slot its index picks.
+pub(crate) struct SphereShadowers<const L: usize, const S: usize> {
+    slots: [Slot<L>; S],
 }
 
-/// How many spheres' objects are kept: a row meets a few dozen spheres, and the rows after it
-/// most of the same.
-const SLOTS: usize = 64;
+/// How many spheres' objects a frame's rows keep: a row meets a few dozen spheres, and the
+/// rows after it most of the same.
+pub(crate) const FRAME_SLOTS: usize = 64;
+
+/// How many a row drawn alone keeps: the spheres of a row, where a frame's slots would be
+/// found again for each row, and stand on the stack for nothing.
+pub(crate) const ROW_SLOTS: usize = 8;
 
 /// The objects that may shadow one sphere, for each light.
 struct Slot<const L: usize> {
@@ -82,10 +86,10 @@ struct Slot<const L: usize> {
     /// For each light, the objects in `kept[light][..counts[light]]`; a count past [`KEPT`]:
     /// none kept, the sweep serves.
     kept: [[u16; KEPT]; L],
-    counts: [usize; L],
+    counts: [u8; L],
 }
 
-impl<const L: usize> SphereShadowers<L> {
+impl<const L: usize, const S: usize> SphereShadowers<L, S> {
     /// For no sphere yet.
     pub(crate) const fn new() -> Self {
         SphereShadowers {
@@ -95,7 +99,7 @@ impl<const L: usize> SphereShadowers<L> {
                     kept: [[0; KEPT]; L],
                     counts: [0; L],
                 }
-            }; SLOTS],
+            }; S],
         }
     }
 }
@@ -108,7 +112,7 @@ impl<const L: usize> Slot<L> {
         let caches = scene.shadow_caches();
         let lights = scene.lights().iter().enumerate();
         for ((light, kept), count) in lights.zip(&mut self.kept).zip(&mut self.counts) {
-            *count = KEPT + 1;
+            *count = KEPT as u8 + 1;
             let (index, light) = light;
             let (Some(sweep), Some(cones), Some(object)) = (
                 caches.sweep(index, objects.len()),
@@ -149,7 +153,7 @@ impl<const L: usize> Slot<L> {
                 }
             });
             if !full {
-                *count = found;
+                *count = found as u8; // at most `KEPT`
             }
         }
     }
@@ -165,9 +169,10 @@ impl<const L: usize> Slot<L> {
         at: &Surface,
     ) -> Option<(Vec3, Fx)> {
         let (kept, cones) = match (self.counts.get(index), self.kept.get(index)) {
-            (Some(&count), Some(kept)) if count <= KEPT => {
-                (kept.get(..count), scene.shadow_caches().cones(index))
-            }
+            (Some(&count), Some(kept)) if usize::from(count) <= KEPT => (
+                kept.get(..usize::from(count)),
+                scene.shadow_caches().cones(index),
+            ),
             _ => (None, None),
         };
         let (Some(kept), Some(cones)) = (kept, cones) else {
@@ -200,7 +205,9 @@ impl<const L: usize> Slot<L> {
 
 /// A crowded row's pixels: those on its floor by the row's [`Floor`], those on a sphere by the
 /// frame's [`SphereShadowers`].
-impl<const N: usize, const L: usize> Pixels<N, L> for (&Floor<N, L>, &mut SphereShadowers<L>) {
+impl<const N: usize, const L: usize, const S: usize> Pixels<N, L>
+    for (&Floor<N, L>, &mut SphereShadowers<L, S>)
+{
     fn pixel(
         &mut self,
         scene: &Scene<N, L>,
@@ -220,7 +227,7 @@ impl<const N: usize, const L: usize> Pixels<N, L> for (&Floor<N, L>, &mut Sphere
         }) else {
             return scene.pixel_among(ray, hit, plane_shadowers);
         };
-        let Some(slot) = spheres.slots.get_mut(h.object % SLOTS) else {
+        let Some(slot) = spheres.slots.get_mut(h.object % S) else {
             return scene.pixel_among(ray, hit, plane_shadowers);
         };
         if slot.sphere != h.object {
@@ -303,7 +310,7 @@ mod tests {
             else {
                 continue;
             };
-            let mut shadowers = SphereShadowers::new();
+            let mut shadowers = SphereShadowers::<2, FRAME_SLOTS>::new();
             for (row, col) in (0..30).flat_map(|row| (0..40).map(move |col| (row, col))) {
                 let ray = camera.ray(col, row);
                 let Some(hit) = scene.shoot(&ray) else {
@@ -312,7 +319,7 @@ mod tests {
                 if !matches!(scene.objects()[hit.object].shape, Shape::Sphere(_)) {
                     continue;
                 }
-                let slot = &mut shadowers.slots[hit.object % SLOTS];
+                let slot = &mut shadowers.slots[hit.object % FRAME_SLOTS];
                 if slot.sphere != hit.object {
                     slot.gather(&scene, hit.object);
                 }
@@ -325,7 +332,7 @@ mod tests {
                     };
                     let shadow = Ray::new_unchecked(point, l);
                     rays += 1;
-                    let Some(list) = slot.kept[i].get(..slot.counts[i]) else {
+                    let Some(list) = slot.kept[i].get(..usize::from(slot.counts[i])) else {
                         swept += 1;
                         continue;
                     };
