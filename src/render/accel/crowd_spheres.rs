@@ -1,8 +1,8 @@
 //! A crowded row's pixels that no run shades: in a scene of more than 32 objects, where the shadow
-//! sets no longer name objects, a pixel on a sphere sends its shadow rays to the few objects that
-//! may shadow that sphere from each light ([`SphereShadowers`]), and a pixel on the row's floor to
-//! the floor's casters of its column (`crowd_floor`), instead of each walking the light's sweep
-//! (`accel/shadow_sweep.rs`).
+//! sets no longer name objects, a pixel on a matte sphere sends its shadow rays to the few objects
+//! that may shadow that sphere from each light ([`SphereShadowers`]), and a pixel on the row's
+//! floor to the floor's casters of its column (`crowd_floor`), instead of each walking the light's
+//! sweep (`accel/shadow_sweep.rs`).
 //!
 //! A shadow ray from a point of a sphere passes within `ρ` of its centre (the point itself
 //! does), so seen from the light it leaves along a direction whose steps lie within the
@@ -25,7 +25,6 @@
 use crate::geometry::ray::Ray;
 use crate::geometry::shape::Shape;
 use crate::numbers::fx::{self, Fx};
-use crate::numbers::vec3::Vec3;
 use crate::render::accel::crowd_floor::Floor;
 use crate::render::accel::shade::blocks;
 use crate::render::accel::shadow_rows::blocking_radius;
@@ -33,7 +32,6 @@ use crate::render::accel::shadow_sweep;
 use crate::render::trace::Surface;
 use crate::scene::hit::SceneHit;
 use crate::scene::light::Light;
-use crate::scene::linear::rgb_of;
 use crate::scene::{Rgb, Scene};
 
 /// The most objects kept for a sphere and a light: at most 64, a mask's bits (and a `u8`).
@@ -159,15 +157,14 @@ impl<const L: usize> Slot<L> {
     }
 
     /// [`Scene::reaches_among`] for a shadow ray from `at`, a point of the sphere the objects
-    /// are for, towards light `index`: its unit direction and cosine, or `None` where it is
-    /// blocked or unlit.
+    /// are for, towards light `index`: its cosine, or `None` where it is blocked or unlit.
     fn reaches<const N: usize>(
         &self,
         scene: &Scene<N, L>,
         index: usize,
         light: &Light,
         at: &Surface,
-    ) -> Option<(Vec3, Fx)> {
+    ) -> Option<Fx> {
         let (kept, cones) = match (self.counts.get(index), self.kept.get(index)) {
             (Some(&count), Some(kept)) if usize::from(count) <= KEPT => (
                 kept.get(..usize::from(count)),
@@ -176,7 +173,9 @@ impl<const L: usize> Slot<L> {
             _ => (None, None),
         };
         let (Some(kept), Some(cones)) = (kept, cones) else {
-            return scene.reaches_among(index, light, at, Some(!0));
+            return scene
+                .reaches_among(index, light, at, Some(!0))
+                .map(|(_, cos)| cos);
         };
         let towards = scene.towards_light(light, at)?;
         let (l, distance_squared) = (towards.l, towards.distance_squared);
@@ -199,7 +198,7 @@ impl<const L: usize> Slot<L> {
                 return None;
             }
         }
-        Some((l, towards.cos))
+        Some(towards.cos)
     }
 }
 
@@ -220,8 +219,11 @@ impl<const N: usize, const L: usize, const S: usize> Pixels<N, L>
             return pixel;
         }
         let found = hit.and_then(|h| Some((h, scene.objects().get(h.object)?)));
+        // A matte sphere's; the others' light, with highlights and secondary rays, as the
+        // plain path's acceleration forms it.
         let Some((h, object)) = found.filter(|(_, object)| {
             matches!(object.shape, Shape::Sphere(_))
+                && object.material.is_plain_matte()
                 && scene.shadows()
                 && scene.objects().len() > 32
         }) else {
@@ -234,23 +236,15 @@ impl<const N: usize, const L: usize, const S: usize> Pixels<N, L>
             slot.gather(scene, h.object);
         }
         let at = Surface::of(&h);
+        let lights = scene.lights().iter().enumerate();
+        let diffuse = lights.fold(Fx::ZERO, |sum, (index, light)| {
+            match slot.reaches(scene, index, light, &at) {
+                Some(cos) => sum.saturating_add(fx::mul_unit(light.intensity, cos)),
+                None => sum,
+            }
+        });
         let material = &object.material;
-        if material.is_plain_matte() {
-            let lights = scene.lights().iter().enumerate();
-            let diffuse = lights.fold(Fx::ZERO, |sum, (index, light)| {
-                match slot.reaches(scene, index, light, &at) {
-                    Some((_, cos)) => sum.saturating_add(fx::mul_unit(light.intensity, cos)),
-                    None => sum,
-                }
-            });
-            return scene.matte_pixel_within_one(material, diffuse, object.colour_at(at.point));
-        }
-        let reaches = |index, light: &Light| slot.reaches(scene, index, light, &at);
-        let light = scene.local_with(object, &at, ray.dir, reaches);
-        if !material.sends_rays() {
-            return rgb_of(light);
-        }
-        scene.beyond(light, ray.dir, &h)
+        scene.matte_pixel_within_one(material, diffuse, object.colour_at(at.point))
     }
 }
 

@@ -66,7 +66,7 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     // frame, which every pixel's call goes through, and takes stack only while a mirror or
     // glass pixel is followed.
     #[inline(never)]
-    pub(crate) fn beyond(&self, light: Linear, dir: Vec3, first: &SceneHit) -> Rgb {
+    fn beyond(&self, light: Linear, dir: Vec3, first: &SceneHit) -> Rgb {
         let local = |object: &Object, at: &Surface, view: Vec3| {
             self.local_among(object, at, view, &[!0; L])
         };
@@ -77,25 +77,11 @@ impl<const N: usize, const L: usize> Scene<N, L> {
     /// towards light `i` tries only the objects of `sets[i]`, and whose highlights are formed
     /// only where they are not 0.
     fn local_among(&self, object: &Object, at: &Surface, view: Vec3, sets: &[u32; L]) -> Linear {
-        self.local_with(object, at, view, |i, light| {
-            self.reaches_among(i, light, at, self.shadow_set(i, sets))
-        })
-    }
-
-    /// `Scene::local` whose light `i` reaches the surface along `l` at the cosine `cos` where
-    /// `reaches(i, light)` is `Some((l, cos))`, and is blocked or unlit where it is `None`.
-    pub(crate) fn local_with(
-        &self,
-        object: &Object,
-        at: &Surface,
-        view: Vec3,
-        mut reaches: impl FnMut(usize, &Light) -> Option<(Vec3, Fx)>,
-    ) -> Linear {
         let material = &object.material;
         let (mut diffuse, mut specular) = (Fx::ZERO, Fx::ZERO);
         let normal = highlight_normal(material, at.normal);
         for (i, light) in self.lights().iter().enumerate() {
-            let Some((l, cos)) = reaches(i, light) else {
+            let Some((l, cos)) = self.reaches_among(i, light, at, self.shadow_set(i, sets)) else {
                 continue;
             };
             diffuse = diffuse.saturating_add(fx::mul_unit(light.intensity, cos));
