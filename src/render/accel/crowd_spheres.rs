@@ -4,23 +4,25 @@
 //! floor to the floor's casters of its column (`crowd_floor`), instead of each walking the light's
 //! sweep (`accel/shadow_sweep.rs`).
 //!
-//! A shadow ray from a point of a sphere passes within `ρ` of its centre (the point itself
-//! does), so seen from the light it leaves along a direction whose steps lie within the
-//! sphere's own intervals along every axis ([`shadow_sweep::steps_from`]). An object that
-//! blocks it holds that direction within its intervals too, so walking the sweep once for the
-//! sphere's intervals, rather than once a ray for its direction, finds every object that can
-//! shadow any of its points. Of those, a sphere whose near side lies past this one's far side
-//! from the light shadows none of them, nor one whose cone the directions within the
-//! intervals all miss (`ShadowCone::may_block_within`, the cone test's own arithmetic taken
-//! at the corners of the intervals). A pixel's shadow ray then tries the few found, each by
-//! the same cone and test as [`Scene::occluded_among`]: every object that can block it is
+//! A shadow ray from a point of a sphere passes within `ρ` of its centre (the point itself does),
+//! so seen from the light it leaves along a direction whose steps lie within the sphere's own
+//! intervals along every axis ([`shadow_sweep::steps_from`]). An object that blocks it holds that
+//! direction within its intervals too, so walking the sweep once for the sphere's intervals, rather
+//! than once a ray for its direction, finds every object that can shadow any of its points. Of
+//! those, a sphere whose near side lies past this one's far side from the light shadows none of
+//! them, nor one whose cone the directions within the intervals all miss
+//! (`ShadowCone::may_block_within`, the cone test's own arithmetic taken at the corners of the
+//! intervals), nor one whose own chord of directions lies farther from this one's than the two
+//! chords reach (`ShadowCone::may_meet_within`: the cones' margins widen a small sphere's several
+//! times over, the chords only by the rounding). A pixel's shadow ray then tries the few found,
+//! each by the same cone and test as [`Scene::occluded_among`]: every object that can block it is
 //! among them, so the pixel is bit for bit the plain path's.
 //!
-//! A frame's rows share the objects found ([`render`](crate::render)), [`FRAME_SLOTS`]
-//! spheres' at a time, each in the slot its index picks (about 9 KB for two lights); a row
-//! drawn alone finds its own, in [`ROW_SLOTS`] (about 1 KB). Past [`KEPT`] objects for a light, or for a sphere whose cone bounds
-//! nothing, the rays walk the sweep as before. Only scenes whose capacity passes 32 make them
-//! (`render_every`); the others' pixels are shaded through `()`, as before.
+//! A frame's rows share the objects found ([`render`](crate::render)), [`FRAME_SLOTS`] spheres' at
+//! a time, each in the slot its index picks (about 9 KB for two lights); a row drawn alone finds
+//! its own, in [`ROW_SLOTS`] (about 1 KB). Past [`KEPT`] objects for a light, or for a sphere whose
+//! cone bounds nothing, the rays walk the sweep as before. Only scenes whose capacity passes 32
+//! make them (`render_every`); the others' pixels are shaded through `()`, as before.
 
 use crate::geometry::ray::Ray;
 use crate::geometry::shape::Shape;
@@ -122,7 +124,8 @@ impl<const L: usize> Slot<L> {
             let Shape::Sphere(ball) = &object.shape else {
                 continue;
             };
-            let Some(steps) = shadow_sweep::steps_from(light.position, &object.shape) else {
+            let from = shadow_sweep::steps_from(light.position, &object.shape);
+            let Some((steps, axis, spread)) = from else {
                 continue;
             };
             // The sphere's points lie within `ρ` of its centre, which lies within a unit of
@@ -135,9 +138,15 @@ impl<const L: usize> Slot<L> {
             let within = shadow_sweep::components_within(steps);
             let mut found = 0;
             let full = shadow_sweep::any_within(sweep, steps, |other| {
-                let shadows = cones.get(other).is_some_and(|cone| {
-                    !cone.starts_past(far_squared) && cone.may_block_within(within)
-                });
+                let shadows = match (cones.get(other), objects.get(other).map(|o| o.shape)) {
+                    (Some(cone), Some(Shape::Sphere(ball))) => {
+                        !cone.starts_past(far_squared)
+                            && cone.may_block_within(within)
+                            && cone.may_meet_within(ball.radius(), axis, spread)
+                    }
+                    (Some(_), Some(Shape::Plane(_))) => true,
+                    _ => false,
+                };
                 if other == sphere || !shadows {
                     return false;
                 }

@@ -4,6 +4,7 @@ use crate::geometry::shape::Shape;
 use crate::numbers::fx::Fx;
 use crate::numbers::isqrt::isqrt;
 use crate::numbers::vec3::Vec3;
+use crate::render::accel::shadow_rows::blocking_radius;
 
 /// The cone from a light that holds a sphere, and the sphere's nearest distance from it.
 ///
@@ -101,6 +102,33 @@ impl ShadowCone {
         let dot = c(dir.x, self.axis[0]) + c(dir.y, self.axis[1]) + c(dir.z, self.axis[2]);
         let within = -dot >= (self.cos as i32) << 14;
         (self.cos == i16::MIN) | ((distance_squared > self.near_squared) & within)
+    }
+
+    /// Whether the sphere of radius `radius` this is the cone of may block a shadow ray whose
+    /// unit direction from the light lies within the chord `spread` of `axis` (both Q2.14,
+    /// `axis` a unit vector rounded down): the ray then passes within `ρ` of the centre
+    /// (`blocking_radius`), so its direction lies within the chord `c = s·(1 + s)` of this
+    /// cone's axis, `s ≥ ρ/D` (as `shadow_sweep`'s spans are bounded), and the two axes lie
+    /// within `spread + c` of each other. `D` is taken at least the near side's distance,
+    /// `√near_squared` rounded down; the axes' rounding, a unit a component each, is 4 units
+    /// of their difference at most, and 5 are allowed. `true` where `s` would pass ½.
+    pub(crate) fn may_meet_within(&self, radius: Fx, axis: [i16; 3], spread: i32) -> bool {
+        if self.cos == i16::MIN {
+            return true;
+        }
+        // Below 2²⁸ raw: a distance within ±2048·√3.
+        let near = isqrt(self.near_squared) as i64;
+        let rho = i64::from(blocking_radius(radius).to_bits());
+        if near <= 2 * rho {
+            return true;
+        }
+        // At most 2¹³ (ρ/D below ½), rounded up.
+        let s = ((rho << 14) + near - 1) / near + 1;
+        let chord = s + ((s * s) >> 14) + 1;
+        let difference = |k: usize| i64::from(self.axis[k]) - i64::from(axis[k]);
+        let apart = difference(0).pow(2) + difference(1).pow(2) + difference(2).pow(2);
+        let reach = i64::from(spread) + chord + 5;
+        apart <= reach * reach
     }
 
     /// Whether some shadow ray may meet the sphere whose direction seen from the light, `−dir`,

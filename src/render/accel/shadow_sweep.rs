@@ -277,18 +277,23 @@ pub(crate) fn any(sweep: &[u32], dir: Vec3, tries: impl FnMut(usize) -> bool) ->
     any_within(sweep, (keys, keys), tries)
 }
 
-/// The steps, along each axis, of the directions in which every shadow ray from a point of a
-/// sphere `shape` leaves a light at `light`: the interval [`span`] bounds for a ray that passes
-/// within `ρ` of the centre, which a ray from a point of the sphere does (`ρ` exceeds the
-/// radius by 2⁻⁸ and more, and a hit lies within a few units of 2⁻¹⁶ of the surface). `None`
-/// for a plane, or a sphere whose cone bounds nothing.
-pub(crate) fn steps_from(light: Vec3, shape: &Shape) -> Option<Keys> {
+/// The directions in which every shadow ray from a point of a sphere `shape` leaves a light at
+/// `light`: those of a ray that passes within `ρ` of the centre, which a ray from a point of
+/// the sphere does (`ρ` exceeds the radius by 2⁻⁸ and more, and a hit lies within a few units
+/// of 2⁻¹⁶ of the surface). Their steps along each axis, the intervals [`span`] bounds; the
+/// unit vector towards the centre, rounded down to Q2.14; and the chord within which they lie
+/// of the exact one, `s·(1 + s)` (Q2.14, see [`span`]). `None` for a plane, or a sphere whose
+/// cone bounds nothing.
+pub(crate) fn steps_from(light: Vec3, shape: &Shape) -> Option<(Keys, [i16; 3], i32)> {
     let bounded = bound(light, shape)?;
     let (mut low, mut high) = ([0; 4], [0; 4]);
     for axis in 0..3 {
         (low[axis], high[axis]) = steps_of(span(bounded, axis));
     }
-    Some((low, high))
+    let (unit, s) = bounded;
+    let q14 = |c: crate::numbers::fx::Fx| (c.to_bits() >> 2) as i16;
+    let chord = s + ((s * s) >> 14) + 1;
+    Some(((low, high), [q14(unit.x), q14(unit.y), q14(unit.z)], chord))
 }
 
 /// The lowest and highest steps of some directions along each axis (the fourth unused).
