@@ -5,11 +5,13 @@
 //!
 //! Past 32 objects the shadow sets (`shadow_rows`, `shadow_columns`) no longer name objects
 //! and every floor pixel sends its shadow rays through the sweep. A row's hits on a plane its
-//! column step is parallel to lie, up to rounding, on one line: a sphere far from the plane
-//! through it and the light (`Pencil`, as `shadow_rows` finds it) shadows none of them, and
-//! any other only the columns `SeenFrom` finds for it (a few products, most spheres ruled
-//! out by the line's two ends without a division); other planes may shadow any column. They
-//! are found once a row and light, sorted by their first column, and a floor pixel's shadow
+//! column step is parallel to lie, up to rounding, on one line: only objects whose shadow
+//! directions meet those of the line's points can shadow them, which one walk of the light's
+//! sweep finds (`shadow_sweep::steps_along`); of those, a sphere far from the plane through
+//! the line and the light (`Pencil`, as `shadow_rows` finds it) shadows none of them, and any
+//! other only the columns `SeenFrom` finds for it (a few products, most spheres ruled out by
+//! the line's two ends without a division); other planes may shadow any column. They are
+//! found once a row and light, sorted by their first column, and a floor pixel's shadow
 //! ray towards a light tries those whose columns hold the pixel's, each by the same cone and
 //! test as [`Scene::occluded_among`]: every object that can block the ray is among them, so
 //! the pixel is bit for bit the plain path's.
@@ -27,6 +29,7 @@ use crate::render::accel::matte::{Axis, MatteRun, Walk};
 use crate::render::accel::shade::blocks;
 use crate::render::accel::shadow_columns::RunLine;
 use crate::render::accel::shadow_rows::{Pencil, sin_between};
+use crate::render::accel::shadow_sweep;
 use crate::render::camera::Camera;
 use crate::render::trace::{Surface, TowardsLight};
 use crate::scene::hit::SceneHit;
@@ -139,27 +142,32 @@ impl<const N: usize, const L: usize> Floor<N, L> {
             step,
             len: camera.cols().into(),
         };
-        let lights = scene.lights().iter();
-        for ((light, casters), count) in lights.zip(&mut floor.casters).zip(&mut floor.counts) {
+        let lights = scene.lights().iter().enumerate();
+        for (((light_index, light), casters), count) in
+            lights.zip(&mut floor.casters).zip(&mut floor.counts)
+        {
             // Past the reach at an end, or an empty row: the row is left to the matte runs.
             let Ok(seen) = line.seen_from(plane.normal(), light.position()) else {
                 return floor;
             };
             let pencil = Pencil::of_row(&plane, row_plane, camera.eye(), light.position());
-            for (object, caster) in objects.iter().enumerate() {
+            let mut consider = |object: usize| {
+                let Some(caster) = objects.get(object) else {
+                    return;
+                };
                 let columns = match caster.shape {
-                    _ if object == index => continue,
+                    _ if object == index => return,
                     Shape::Plane(_) => 0..usize::from(u16::MAX),
                     Shape::Sphere(sphere)
                         if pencil.as_ref().is_some_and(|p| p.rules_out(&sphere)) =>
                     {
-                        continue;
+                        return;
                     }
                     Shape::Sphere(sphere) => {
                         let (first, end, bound) = seen.sides(&sphere);
                         // Beyond the bound on one side at both ends: on that side throughout.
                         if first.min(end) > bound || first.max(end) < -bound {
-                            continue;
+                            return;
                         }
                         seen.columns(first, end, bound)
                     }
@@ -172,6 +180,18 @@ impl<const N: usize, const L: usize> Floor<N, L> {
                     };
                     *count += 1;
                 }
+            };
+            // The objects whose shadow directions may meet those of the row's hits, from the
+            // light's sweep; every object where there is none.
+            let sweep = scene.shadow_caches().sweep(light_index, objects.len());
+            match (sweep, shadow_sweep::steps_along(seen.ends())) {
+                (Some(sweep), Some(steps)) => {
+                    shadow_sweep::any_within(sweep, steps, |object| {
+                        consider(object);
+                        false
+                    });
+                }
+                _ => (0..objects.len()).for_each(consider),
             }
             if let Some(found) = casters.get_mut(..*count) {
                 found.sort_unstable_by_key(|caster| caster.first);

@@ -110,6 +110,12 @@ pub(crate) struct SeenFrom {
 }
 
 impl SeenFrom {
+    /// The run's two ends from the light: every hit lies within a unit of 2⁻¹⁶ a component of
+    /// the segment between them (each end and each hit within half a unit of the exact ones).
+    pub(crate) const fn ends(&self) -> (Vec3, Vec3) {
+        (self.start, self.end)
+    }
+
     /// The affine side of the sphere `sphere` at the run's two ends and the bound within which
     /// it may shadow a column (coarse units): the columns are those where the line through
     /// the two sides lies within `±bound` ([`SeenFrom::columns`]), and there are none where

@@ -296,6 +296,42 @@ pub(crate) fn steps_from(light: Vec3, shape: &Shape) -> Option<(Keys, [i16; 3], 
     Some(((low, high), [q14(unit.x), q14(unit.y), q14(unit.z)], chord))
 }
 
+/// The steps, along each axis, of the directions from a light to every point within a unit
+/// of 2⁻¹⁶ a component of the segment between `ends` (seen from the light), of a shadow ray
+/// from such a point: `None` where an end lies within a unit of the light (by `|·|₁`), or the
+/// ends' unit vectors lie a quarter turn apart or more.
+///
+/// The directions to the segment's points lie on the great circle's arc between its ends'
+/// unit vectors `a` and `b`, whose every point lies within `1 − cos(θ/2) ≤ c²/4` of the chord,
+/// `c = |a − b|`: along each axis, between the ends' components widened by that. `a` and `b`
+/// rounded to Q2.14 are a unit a component off, so `c` is taken 4 units more. A point a unit
+/// of 2⁻¹⁶ a component off the segment, at least `1/√3` from the light, turns the direction by
+/// under 3·2⁻¹⁶, a unit; 8 are allowed, and the ray's own rounding, as for [`span`], 4 more.
+pub(crate) fn steps_along((start, end): (Vec3, Vec3)) -> Option<Keys> {
+    let near = |v: Vec3| v.l1_raw() < 1 << 16;
+    if near(start) || near(end) {
+        return None;
+    }
+    let (a, b) = (start.try_normalize()?, end.try_normalize()?);
+    let q14 = |v: Vec3| [v.x, v.y, v.z].map(|c| i64::from(c.to_bits() >> 2));
+    let (a, b) = (q14(a), q14(b));
+    let squared = (0..3).map(|k| (a[k] - b[k]).pow(2)).sum::<i64>();
+    // A chord of √2 is a quarter turn: past it the bound is not kept.
+    if squared >= 2 << 28 {
+        return None;
+    }
+    let chord = crate::numbers::isqrt::isqrt(squared as u64) as i64 + 1 + 4;
+    let sag = ((chord * chord) >> 16) + 1;
+    let (mut low, mut high) = ([0; 4], [0; 4]);
+    for k in 0..3 {
+        let widen = sag + 8 + 4;
+        let start = (a[k].min(b[k]) - widen) as i32;
+        let end = (a[k].max(b[k]) + widen) as i32;
+        (low[k], high[k]) = steps_of((start, end));
+    }
+    Some((low, high))
+}
+
 /// The lowest and highest steps of some directions along each axis (the fourth unused).
 pub(crate) type Keys = ([u32; 4], [u32; 4]);
 
@@ -458,5 +494,49 @@ mod tests {
         // leads to far fewer objects than the scenes hold (91 on average).
         assert!(blocked > rays, "{blocked} blockers of {rays} rays");
         assert!(tried * 3 < rays * 91, "{tried} tried for {rays} rays");
+    }
+
+    /// Random segments seen from random lights, shadow rays from random points within a unit
+    /// of 2⁻¹⁶ of them: each ray's steps lie within those `steps_along` finds, along each axis.
+    #[test]
+    fn a_segments_steps_hold_every_shadow_ray_from_near_it() {
+        let mut rng = crate::xorshift::XorShift(0x5eed_5e9e_0000_0002);
+        let (mut rays, mut bounded) = (0, 0);
+        for _ in 0..4_000 {
+            let v = |rng: &mut crate::xorshift::XorShift, r: f32| {
+                Vec3::new(
+                    crate::Fx::from_num(rng.signed(r)),
+                    crate::Fx::from_num(rng.signed(r)),
+                    crate::Fx::from_num(rng.signed(r)),
+                )
+            };
+            let light = v(&mut rng, 30.0);
+            let (a, b) = (v(&mut rng, 30.0), v(&mut rng, 30.0));
+            let Some((low, high)) = steps_along((a - light, b - light)) else {
+                continue;
+            };
+            bounded += 1;
+            for _ in 0..20 {
+                let t = (rng.next() % 1025) as i64;
+                let mut along = |p: crate::Fx, q: crate::Fx| {
+                    let (p, q) = (i64::from(p.to_bits()), i64::from(q.to_bits()));
+                    let jitter = (rng.next() % 3) as i64 - 1;
+                    crate::Fx::from_bits((p + (q - p) * t / 1024 + jitter) as i32)
+                };
+                let point = Vec3::new(along(a.x, b.x), along(a.y, b.y), along(a.z, b.z));
+                let Some(dir) = (light - point).try_normalize() else {
+                    continue;
+                };
+                let key = |c: crate::Fx| step_of(-(c.to_bits() >> 2));
+                for (k, c) in [dir.x, dir.y, dir.z].into_iter().enumerate() {
+                    assert!(low[k] <= key(c) && key(c) <= high[k], "axis {k}");
+                }
+                rays += 1;
+            }
+        }
+        assert!(
+            bounded > 2_000 && rays > 40_000,
+            "{bounded} segments, {rays} rays"
+        );
     }
 }
